@@ -1,0 +1,33 @@
+#pragma once
+// "Elastic": the linear ordinary state-based peridynamic solid (Silling et al. 2007; Pirzadeh et al.
+// 2024 Eqs. 3-13) in 3D, plane stress and plane strain. Declares the node field Dilatation.
+#include "Material.hpp"
+#include "MaterialRegistry.hpp"
+#include "OsbConstants.hpp"
+
+namespace pf {
+
+class ElasticMaterial : public Material {
+ public:
+  explicit ElasticMaterial(const MaterialInput& in);
+  static MaterialEntry entry();
+
+  std::vector<StateSpec> stateSpecs() const override;
+  void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
+  void stiffnessBound(const FamilyView& fam, double* bound) const override;
+  double density() const override { return density_; }
+  Dimension dimension() const override { return dim_; }
+
+  const ElasticModuli& moduli() const { return moduli_; }
+  const OsbConstants& constants() const { return osb_; }
+  double thickness() const { return thickness_; }
+
+ private:
+  ElasticModuli moduli_;
+  Dimension dim_;
+  double thickness_ = 0.0;
+  double density_;
+  OsbConstants osb_;
+};
+
+}  // namespace pf

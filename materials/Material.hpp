@@ -1,0 +1,42 @@
+#pragma once
+// A constitutive model: turns deformed positions of a family into force densities. It is handed plain
+// arrays (FamilyView, StateStore) and knows nothing of MPI, files or solvers. One instance per block.
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "BondFamily.hpp"
+#include "Dimension.hpp"
+#include "StateStore.hpp"
+
+namespace pf {
+
+// Thrown by computeForce when a constitutive update cannot be completed (e.g. the return mapping did
+// not converge). Solvers treat it as a failed iteration of the load step, never as a result.
+class ConstitutiveFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class Material {
+ public:
+  virtual ~Material() = default;
+
+  // Per-node and per-bond state this model needs; the core allocates it before the first call.
+  virtual std::vector<StateSpec> stateSpecs() const { return {}; }
+
+  // Adds to force (3 per overlap node, owned and ghost) the internal force density of the bonds of owned
+  // nodes [fam.begin, fam.end): f_i += T_i<j> V_j and f_j -= T_i<j> V_i. y: deformed positions, 3 per
+  // overlap node. Writes trial state only.
+  virtual void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const = 0;
+
+  // An upper bound on sum_j |dF_i/du_j| per owned node in [fam.begin, fam.end) (force density per
+  // length): the diagonal fictitious density of adaptive dynamic relaxation and the stable time step.
+  virtual void stiffnessBound(const FamilyView& fam, double* bound) const = 0;
+
+  virtual double density() const = 0;
+  virtual Dimension dimension() const = 0;
+};
+
+}  // namespace pf

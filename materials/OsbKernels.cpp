@@ -1,0 +1,64 @@
+#include "OsbKernels.hpp"
+
+#include <cmath>
+
+namespace pf {
+
+void osbDilatation(const FamilyView& fam, const OsbConstants& c, const double* y, const double* edp,
+                   double* theta) {
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    double sum = 0.0;
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      const int j = fam.neighbors[b];
+      const double d0 = y[3 * j] - yi0, d1 = y[3 * j + 1] - yi1, d2 = y[3 * j + 2] - yi2;
+      const double x = fam.refLength[b];
+      double e = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2) - x;
+      if (edp) e -= edp[b];
+      sum += fam.influence[b] * x * e * fam.volume[j];
+    }
+    theta[i] = c.k * c.D * sum / fam.weightedVolume[i];
+  }
+}
+
+void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double* y, const double* theta,
+                     double* force) {
+  const double* V = fam.volume;
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    const double invm = 1.0 / fam.weightedVolume[i];
+    const double iso = (c.A - c.B * c.c) * theta[i] * invm;  // coefficient of omega x
+    const double dev = c.B * invm;                          // coefficient of omega e
+    double fi0 = 0, fi1 = 0, fi2 = 0;
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      const int j = fam.neighbors[b];
+      const double d0 = y[3 * j] - yi0, d1 = y[3 * j + 1] - yi1, d2 = y[3 * j + 2] - yi2;
+      const double len = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+      const double x = fam.refLength[b];
+      const double t = fam.influence[b] * (iso * x + dev * (len - x));
+      const double s = t / len;
+      fi0 += s * d0 * V[j]; fi1 += s * d1 * V[j]; fi2 += s * d2 * V[j];
+      force[3 * j] -= s * d0 * V[i]; force[3 * j + 1] -= s * d1 * V[i]; force[3 * j + 2] -= s * d2 * V[i];
+    }
+    force[3 * i] += fi0; force[3 * i + 1] += fi1; force[3 * i + 2] += fi2;
+  }
+}
+
+void osbStiffnessBound(const FamilyView& fam, const OsbConstants& c, double* bound) {
+  const double coupling = std::fabs(c.A - c.B * c.c) * c.k * c.D;
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const double m = fam.weightedVolume[i];
+    double S = 0.0;  // sum omega x V: scale of d theta / d e
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b)
+      S += fam.influence[b] * fam.refLength[b] * fam.volume[fam.neighbors[b]];
+    double sum = 0.0;
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      const double w = fam.influence[b], x = fam.refLength[b], Vj = fam.volume[fam.neighbors[b]];
+      sum += Vj * w * (c.B / m + 2.0 * coupling * x * S / (m * m));
+    }
+    // both ends of each bond (t_ij and t_ji) load node i
+    bound[i] = 2.0 * sum;
+  }
+}
+
+}  // namespace pf

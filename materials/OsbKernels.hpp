@@ -1,0 +1,23 @@
+#pragma once
+// Plain bond loops of the linear ordinary state-based solid (see OsbConstants.hpp for the equations).
+// They stream the CSR bond arrays once per pass and allocate nothing; materials compose them.
+#include "BondFamily.hpp"
+#include "OsbConstants.hpp"
+
+namespace pf {
+
+// theta_i = k (D/m_i) sum_j omega x (e - e^dp) V_j for owned i in [begin, end). edp may be null (no
+// plastic extension). Eq. 4 (elastic) and Eq. 16 (with plastic extension).
+void osbDilatation(const FamilyView& fam, const OsbConstants& c, const double* y, const double* edp,
+                   double* theta);
+
+// Elastic force state t = A theta omega x/m + B omega (e - c theta x)/m along the deformed bond; adds
+// f_i += t V_j M and f_j -= t V_i M (Eqs. 7-13).
+void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double* y, const double* theta,
+                     double* force);
+
+// Upper bound of sum_j |dF_i/du_j| of the elastic force for owned i in [begin, end), from the two
+// terms of t (direct extension and dilatation coupling), both ends of each bond counted.
+void osbStiffnessBound(const FamilyView& fam, const OsbConstants& c, double* bound);
+
+}  // namespace pf

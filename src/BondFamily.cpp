@@ -1,0 +1,16 @@
+#include "BondFamily.hpp"
+
+namespace pf {
+
+void computeWeightedVolume(const FamilyView& fam, double* m) {
+  for (int i = fam.begin; i < fam.end; ++i) {
+    double sum = 0.0;
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      const double r = fam.refLength[b];
+      sum += fam.influence[b] * r * r * fam.volume[fam.neighbors[b]];
+    }
+    m[i] = sum;
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,53 @@
+#pragma once
+// Bonds of the owned nodes in compressed-row form. Row i (an owned node, local index) holds its
+// neighbours as local indices into the overlap arrays (owned nodes first, then ghosts). Built once on
+// the reference configuration; kernels only read it.
+#include <cstddef>
+#include <vector>
+
+namespace pf {
+
+struct BondFamily {
+  std::vector<int> offsets;        // size numOwned + 1
+  std::vector<int> neighbors;      // overlap-local index of the far end of each bond
+  std::vector<double> refLength;   // |xi| of each bond
+  std::vector<double> influence;   // omega(|xi|) of each bond
+
+  int numOwned() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
+  std::size_t numBonds() const { return neighbors.size(); }
+};
+
+// What a bond kernel sees: plain pointers into contiguous arrays, for owned nodes [begin, end).
+// Per-node arrays are indexed by overlap-local node index, per-bond arrays by bond index.
+struct FamilyView {
+  int begin = 0, end = 0;           // owned nodes this call works on (one material block)
+  const int* offsets = nullptr;
+  const int* neighbors = nullptr;
+  const double* refLength = nullptr;
+  const double* influence = nullptr;
+  const double* x = nullptr;        // reference coordinates, 3 per overlap node
+  const double* volume = nullptr;   // overlap nodes
+  const double* weightedVolume = nullptr;  // owned nodes: m = sum omega |xi|^2 V'
+  double horizon = 0.0;
+};
+
+inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,
+                           const double* m, double horizon) {
+  FamilyView v;
+  v.begin = begin;
+  v.end = end;
+  v.offsets = f.offsets.data();
+  v.neighbors = f.neighbors.data();
+  v.refLength = f.refLength.data();
+  v.influence = f.influence.data();
+  v.x = x;
+  v.volume = volume;
+  v.weightedVolume = m;
+  v.horizon = horizon;
+  return v;
+}
+
+// m_i = sum_j omega_ij |xi_ij|^2 V_j for owned nodes [begin, end) (Pirzadeh 2024 Eq. 5 context).
+void computeWeightedVolume(const FamilyView& fam, double* m);
+
+}  // namespace pf

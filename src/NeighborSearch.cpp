@@ -1,0 +1,89 @@
+#include "NeighborSearch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace pf {
+
+void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizon,
+                   BondFamily& family) {
+  const int n = static_cast<int>(points.size() / 3);
+  family.offsets.assign(1, 0);
+  family.neighbors.clear();
+  family.refLength.clear();
+  if (numQueries == 0) return;
+  double hmax = 0.0;
+  for (int i = 0; i < numQueries; ++i) hmax = std::max(hmax, horizon[i]);
+  if (!(hmax > 0)) throw std::invalid_argument("buildFamilies: horizon must be positive");
+
+  double lo[3], hi[3];
+  for (int d = 0; d < 3; ++d) { lo[d] = std::numeric_limits<double>::max(); hi[d] = -lo[d]; }
+  for (int p = 0; p < n; ++p)
+    for (int d = 0; d < 3; ++d) { lo[d] = std::min(lo[d], points[3 * p + d]); hi[d] = std::max(hi[d], points[3 * p + d]); }
+  long dims[3];
+  long total = 1;
+  for (int d = 0; d < 3; ++d) {
+    dims[d] = std::max(1L, static_cast<long>((hi[d] - lo[d]) / hmax) + 1);
+    total *= dims[d];
+  }
+  if (total > 4L * n + 64) {  // sparse cloud: coarsen cells so the grid stays O(N)
+    const double f = std::cbrt(static_cast<double>(total) / (4.0 * n + 64));
+    total = 1;
+    for (int d = 0; d < 3; ++d) { dims[d] = std::max(1L, static_cast<long>(dims[d] / f)); total *= dims[d]; }
+  }
+  double cell[3];
+  for (int d = 0; d < 3; ++d) cell[d] = std::max((hi[d] - lo[d]) / dims[d], 1e-300);
+  auto cellOf = [&](const double* p, int d) {
+    long c = static_cast<long>((p[d] - lo[d]) / cell[d]);
+    return std::min(std::max(c, 0L), dims[d] - 1);
+  };
+  // counting sort of points into cells
+  std::vector<long> start(total + 1, 0);
+  std::vector<long> cellIndex(n);
+  for (int p = 0; p < n; ++p) {
+    const double* x = &points[3 * p];
+    cellIndex[p] = (cellOf(x, 2) * dims[1] + cellOf(x, 1)) * dims[0] + cellOf(x, 0);
+    ++start[cellIndex[p] + 1];
+  }
+  for (long c = 0; c < total; ++c) start[c + 1] += start[c];
+  std::vector<int> sorted(n);
+  {
+    std::vector<long> fill(start.begin(), start.end() - 1);
+    for (int p = 0; p < n; ++p) sorted[fill[cellIndex[p]]++] = p;
+  }
+
+  std::vector<int> row;
+  for (int i = 0; i < numQueries; ++i) {
+    const double* xi = &points[3 * i];
+    const double h = horizon[i];
+    const double h2 = h * h * (1.0 + 1e-10);
+    long cmin[3], cmax[3];
+    for (int d = 0; d < 3; ++d) {
+      cmin[d] = std::max(0L, static_cast<long>(std::floor((xi[d] - h - lo[d]) / cell[d])));
+      cmax[d] = std::min(dims[d] - 1, static_cast<long>(std::floor((xi[d] + h - lo[d]) / cell[d])));
+    }
+    row.clear();
+    for (long cz = cmin[2]; cz <= cmax[2]; ++cz)
+      for (long cy = cmin[1]; cy <= cmax[1]; ++cy)
+        for (long cx = cmin[0]; cx <= cmax[0]; ++cx) {
+          const long c = (cz * dims[1] + cy) * dims[0] + cx;
+          for (long s = start[c]; s < start[c + 1]; ++s) {
+            const int j = sorted[s];
+            if (j == i) continue;
+            const double d0 = points[3 * j] - xi[0], d1 = points[3 * j + 1] - xi[1], d2 = points[3 * j + 2] - xi[2];
+            if (d0 * d0 + d1 * d1 + d2 * d2 <= h2) row.push_back(j);
+          }
+        }
+    std::sort(row.begin(), row.end());
+    for (int j : row) {
+      const double d0 = points[3 * j] - xi[0], d1 = points[3 * j + 1] - xi[1], d2 = points[3 * j + 2] - xi[2];
+      family.neighbors.push_back(j);
+      family.refLength.push_back(std::sqrt(d0 * d0 + d1 * d1 + d2 * d2));
+    }
+    family.offsets.push_back(static_cast<int>(family.neighbors.size()));
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,17 @@
+#pragma once
+// O(N) cell-list search for peridynamic families on the reference configuration. Points at distance
+// <= horizon (with a 1e-10 relative tolerance so lattice ties are included on every rank alike) are
+// neighbours; a point is never its own neighbour.
+#include <vector>
+
+#include "BondFamily.hpp"
+
+namespace pf {
+
+// points: 3 per point (all candidates, e.g. owned then ghost); the first numQueries points are the
+// ones whose families are built; horizon: one per query point. Fills offsets/neighbors/refLength.
+// Neighbours of each row are sorted by index for a deterministic bond order.
+void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizon,
+                   BondFamily& family);
+
+}  // namespace pf

@@ -1,0 +1,44 @@
+#pragma once
+// Named per-node and per-bond state arrays that materials declare and the core owns. History fields keep
+// a committed copy (step n) and a trial copy (step n+1): solvers commit after a converged load step and
+// roll back otherwise, so every iteration of a step starts from the committed state.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+enum class Location { Node, Bond };
+
+struct StateSpec {
+  std::string name;         // also the output variable name (Peridigm style, e.g. "Lambda")
+  Location where = Location::Node;
+  bool history = false;     // needs committed/trial pair
+  bool output = false;      // may be requested in Output Variables
+};
+
+class StateStore {
+ public:
+  // numNodes: owned nodes; numBonds: bonds of the owned nodes.
+  void allocate(const std::vector<StateSpec>& specs, int numNodes, std::size_t numBonds);
+
+  bool has(const std::string& name) const { return fields_.count(name) != 0; }
+  double* trial(const std::string& name);                 // the value being computed (n+1)
+  const double* committed(const std::string& name) const; // value at the last converged step (n)
+  const StateSpec& spec(const std::string& name) const;
+  std::vector<StateSpec> specs() const;
+
+  void commit();    // trial -> committed for every history field
+  void rollback();  // committed -> trial for every history field
+
+ private:
+  struct Field {
+    StateSpec spec;
+    std::vector<double> trial, committed;
+  };
+  Field& field(const std::string& name);
+  const Field& field(const std::string& name) const;
+  std::map<std::string, Field> fields_;
+};
+
+}  // namespace pf
