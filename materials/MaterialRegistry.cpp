@@ -1,6 +1,8 @@
 #include "MaterialRegistry.hpp"
 
 #include "ElasticMaterial.hpp"
+#include "ElasticPlasticMaterial.hpp"
+#include "HardeningPlasticity.hpp"
 #include "InputError.hpp"
 
 namespace pf {
@@ -9,6 +11,8 @@ const std::vector<MaterialEntry>& materialRegistry() {
   // One line per model.
   static const std::vector<MaterialEntry> entries = {
       ElasticMaterial::entry(),
+      ElasticPlasticMaterial::entry(),
+      HardeningPlasticity::entry(),
   };
   return entries;
 }

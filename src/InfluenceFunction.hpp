@@ -1,6 +1,7 @@
 #pragma once
-// Peridigm's influence functions omega(r, delta): "One", "Parabolic Decay" (1 - (r/delta)^2) and
-// "Gaussian" (exp(-(r/delta)^2 / ... )) as Peridigm defines them. Unknown names are an InputError.
+// Peridigm's influence functions omega(r, delta), s = r/delta: "One"; "Parabolic Decay" (1 for s < 0.5,
+// else -4s^2 + 4s); "Gaussian" (exp(-s^2)), as in Peridigm_InfluenceFunction.hpp. Unknown names are an
+// InputError.
 #include <string>
 
 namespace pf {

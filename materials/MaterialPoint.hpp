@@ -1,0 +1,48 @@
+#pragma once
+// One interior material point with its complete family on a regular lattice (cube in 3D, square in 2D,
+// spacing dx, horizon ratio*dx): impose y = F X on every point, evaluate the model on the centre node only
+// and read its state. For verification tests and the periforge-point driver; not used by the solver.
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "BondFamily.hpp"
+#include "Material.hpp"
+#include "StateStore.hpp"
+
+namespace pf {
+
+// Builds a registered model from plain values (as the input schema would hand them over); throws
+// InputError for an unknown model.
+std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<std::string, double>& values,
+                                       const std::map<std::string, std::string>& strings = {});
+
+class MaterialPoint {
+ public:
+  // thickness: out-of-plane thickness of the nodal volumes of a 2D model (ignored in 3D).
+  MaterialPoint(const Material& mat, double dx, double ratio, double thickness = 0.0);
+
+  void deform(const std::array<double, 9>& F);  // y = F X, F row-major
+  void evaluate();                              // trial state of the centre (may throw ConstitutiveFailure)
+  void commit() { state_.commit(); }
+  void rollback() { state_.rollback(); }
+
+  double value(const std::string& field) const;  // trial value of a node field at the centre
+  // Force-state stress of the centre, sum_j T<xi_j> (x) xi_j V_j (row-major), from the last evaluate().
+  std::array<double, 9> stress() const;
+  const std::vector<double>& force() const { return force_; }  // 3 per lattice point, centre first
+  int numBonds() const { return static_cast<int>(family_.numBonds()); }
+  double weightedVolume() const { return m_[0]; }
+  StateStore& state() { return state_; }
+
+ private:
+  const Material& mat_;
+  std::vector<double> x_, y_, volume_, force_, m_;
+  BondFamily family_;
+  FamilyView view_;
+  StateStore state_;
+};
+
+}  // namespace pf

@@ -1,0 +1,193 @@
+#include "OsbPlasticKernels.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "Material.hpp"
+
+namespace pf {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Constants of the yield surface written with the weighted volume my (see YieldNormalization).
+// psi0 = Cy sigma_bar^2 (Eqs. 39/46), |d eps_p| = dlambda sqrt(Ce psi) (Eq. 55 with the 2D term),
+// psi = |t|^2/2 + a2 (t.x)^2 (Eq. 31).
+struct YieldConstants {
+  double Cy, Ce, a2;
+};
+
+YieldConstants yieldConstants(Dimension dim, double my) {
+  if (dim == Dimension::ThreeD) return {2.5 / my, 10.0 / my, 0.0};
+  // 2D: psi0 = 8 sigma^2/(3 pi h delta^4) = 4 sigma^2/(3 m) as printed. The (t.x)^2 coefficient that
+  // reproduces 3D J2 in plane strain and plane stress with c = 5/12 resp. 1/3 + kappa/(8 mu) is
+  // 5/(2m), not the printed 4/(pi h delta^4) = 2/m; Ce follows from |de_p|^2 = dlambda^2 8 psi/m.
+  return {4.0 / (3.0 * my), 16.0 / (3.0 * my), 2.5 / my};
+}
+
+inline double bondLength(const double* y, int i, int j) {
+  const double d0 = y[3 * j] - y[3 * i], d1 = y[3 * j + 1] - y[3 * i + 1], d2 = y[3 * j + 2] - y[3 * i + 2];
+  return std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+}
+
+}  // namespace
+
+void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
+                double* force) {
+  const OsbConstants& c = p.osb;
+  const double* V = fam.volume;
+  // beta: does the dilatation see the plastic extension (Eq. 16)? 3D: either way (sum x e^dp = 0 for
+  // omega = 1). Plane stress: yes. Plane strain: no -- only then is the in-plane mean stress classical
+  // (see docs/materials.md).
+  const bool beta = p.dim != Dimension::PlaneStrain;
+  // phi: weight of the x-component (t.x) x/m of the flow direction. 1 = Eq. 52 (3D, plane strain);
+  // plane stress needs 2 to follow the 3D J2 flow with sigma_zz = 0 (sigma_zz-free eps_p_zz).
+  const double phi = p.dim == Dimension::PlaneStress ? 2.0 : 1.0;
+  // Decay rate of the x-component relative to the rest during the return (G2 vs G1 of Eq. 47):
+  // the flow changes theta when beta is set, which feeds back through -c theta x.
+  const double g2 = phi * (1.0 - (beta ? c.c * c.k * c.D : 0.0));
+  const double KH = p.isoHardening + p.kinHardening;
+
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const int b0 = fam.offsets[i], b1 = fam.offsets[i + 1];
+    const double m = fam.weightedVolume[i];
+    const double invm = 1.0 / m;
+    double my = m;
+    if (p.norm == YieldNormalization::Continuum) {
+      const double d = fam.horizon;
+      my = p.dim == Dimension::ThreeD ? 0.8 * kPi * d * d * d * d * d : 0.5 * kPi * p.thickness * d * d * d * d;
+    }
+    const YieldConstants yc = yieldConstants(p.dim, my);
+    const double bm = c.B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
+
+    // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
+    // osbDilatation so that the elastic response is bit-identical to "Elastic".
+    double sum = 0.0;
+    for (int b = b0; b < b1; ++b) {
+      const int j = fam.neighbors[b];
+      const double x = fam.refLength[b];
+      double e = bondLength(y, i, j) - x;
+      if (beta) e -= s.edpN[b];
+      sum += fam.influence[b] * x * e * V[j];
+    }
+    const double thetaTr = c.k * c.D * sum / m;
+
+    // Trial deviatoric force state (Eqs. 40-41) and its moments.
+    double S2 = 0, Sx = 0, S3 = 0, A3 = 0, Xx = 0;
+    for (int b = b0; b < b1; ++b) {
+      const int j = fam.neighbors[b];
+      const double x = fam.refLength[b];
+      const double e = bondLength(y, i, j) - x;
+      const double td = fam.influence[b] * bm * (e - c.c * thetaTr * x - s.edpN[b]);
+      const double tv = td * V[j];
+      S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += std::fabs(td) * td * tv; Xx += x * x * V[j];
+    }
+    // Split t^d = t_perp + pp x with t_perp . x = 0: the two parts decay at different rates in plane
+    // stress, and only pp enters the 2D (t.x)^2 term.
+    const double pp = Sx / Xx;
+    const double Pperp = std::fmax(S2 - pp * pp * Xx, 0.0);
+    const double Ppar = pp * pp * Xx * (1.0 + 2.0 * yc.a2 * Xx);
+    const double psiTr = 0.5 * (Pperp + Ppar);
+    const double vmTr = std::sqrt(psiTr / yc.Cy);  // Eq. 20 (3D with /2, see design doc), 2D analogue
+
+    // Sign of sigma_vm: third moment of t^d (analogue of J3); kept from the last step when it vanishes
+    // (pure shear), +1 for a virgin point.
+    double sgn = s.signN[i] != 0.0 ? s.signN[i] : 1.0;
+    if (S3 > 1e-8 * std::fabs(A3)) sgn = 1.0;
+    else if (S3 < -1e-8 * std::fabs(A3)) sgn = -1.0;
+    // Direction of plastic flow along the loading axis, sign(sigma_vm - q) of Eqs. 45-46, 56.
+    const double dir = sgn * vmTr - s.qN[i] >= 0.0 ? 1.0 : -1.0;
+    // Current yield level, Eqs. 39/46 (not Eq. 32, which drops q after the sign).
+    const double sbarN = p.yieldStress + p.isoHardening * s.alphaN[i] + dir * s.qN[i];
+    if (!(sbarN > 0.0)) {
+      std::ostringstream msg;
+      msg << "J2 return mapping: back stress " << s.qN[i] << " exceeds the yield level at node " << i
+          << "; the scalar kinematic hardening model does not cover this state";
+      throw ConstitutiveFailure(msg.str());
+    }
+
+    double dlam = 0.0, G1 = 1.0, G2 = 1.0, vm = vmTr, deps = 0.0;
+    int iters = 0;
+    if (vmTr > sbarN) {  // f(t^d_trial) > 0, Eq. 31
+      // Initial guess: exact when G1 = G2 (3D, plane strain), where the return is radial with slope
+      // bm/(2 Cy) (= 3 mu for the discrete normalisation).
+      const double e0 = (vmTr - sbarN) / (bm / (2.0 * yc.Cy) + KH);
+      dlam = e0 / (2.0 * yc.Cy * (sbarN + KH * e0));
+      // Newton on Eq. 50 written as sqrt(psi/Cy) = sigma_bar (same root, better scaled), with
+      // alpha and q following Eqs. 55-57 so sigma_bar = sigma_bar_n + (K + H) |d eps_p|.
+      bool converged = false;
+      for (;;) {
+        G1 = 1.0 / (1.0 + bm * dlam);
+        G2 = 1.0 / (1.0 + g2 * bm * dlam);
+        const double psi = 0.5 * (G1 * G1 * Pperp + G2 * G2 * Ppar);
+        const double dpsi = -bm * (G1 * G1 * G1 * Pperp + g2 * G2 * G2 * G2 * Ppar);
+        const double root = std::sqrt(yc.Ce * psi);
+        vm = std::sqrt(psi / yc.Cy);
+        deps = dlam * root;
+        const double F = vm - sbarN - KH * deps;
+        if (std::fabs(F) <= p.tolerance * vmTr) { converged = true; break; }
+        if (iters == p.maxIterations) break;
+        const double dF = dpsi / (2.0 * std::sqrt(yc.Cy * psi)) - KH * (root + dlam * yc.Ce * dpsi / (2.0 * root));
+        dlam -= F / dF;
+        if (dlam < 0.0) dlam = 0.0;
+        ++iters;
+      }
+      if (!converged) {
+        std::ostringstream msg;
+        msg << "J2 return mapping did not converge in " << p.maxIterations << " iterations at node " << i
+            << " (trial von Mises " << vmTr << ", yield level " << sbarN << ")";
+        throw ConstitutiveFailure(msg.str());
+      }
+    }
+
+    // Plastic extension (Eqs. 52, 58) and the dilatation it implies.
+    double theta = thetaTr;
+    if (dlam > 0.0) {
+      const double a1 = dlam * G1, a2 = dlam * phi * G2 * pp;
+      sum = 0.0;
+      for (int b = b0; b < b1; ++b) {
+        const int j = fam.neighbors[b];
+        const double x = fam.refLength[b];
+        double e = bondLength(y, i, j) - x;
+        const double td = fam.influence[b] * bm * (e - c.c * thetaTr * x - s.edpN[b]);
+        const double edp = s.edpN[b] + a1 * (td - pp * x) + a2 * x;
+        s.edp[b] = edp;
+        if (beta) e -= edp;
+        sum += fam.influence[b] * x * e * V[j];
+      }
+      theta = c.k * c.D * sum / m;
+    } else {
+      for (int b = b0; b < b1; ++b) s.edp[b] = s.edpN[b];
+    }
+
+    s.lambda[i] = s.lambdaN[i] + dlam;
+    s.alpha[i] = s.alphaN[i] + deps;                       // Eq. 57
+    s.q[i] = s.qN[i] + dir * p.kinHardening * deps;       // Eq. 56
+    s.sign[i] = sgn;
+    s.vonMises[i] = vm;
+    s.signedVonMises[i] = sgn * vm;
+    s.theta[i] = theta;
+    if (s.iterations) s.iterations[i] = iters;
+
+    // Force from the updated state, written as osbElasticForce writes it (t = t^iso + t^d, Eqs. 7-13
+    // with e^d - e^dp), along the deformed bond.
+    const double iso = (c.A - c.B * c.c) * theta * invm;
+    const double dev = c.B * invm;
+    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+    double fi0 = 0, fi1 = 0, fi2 = 0;
+    for (int b = b0; b < b1; ++b) {
+      const int j = fam.neighbors[b];
+      const double d0 = y[3 * j] - yi0, d1 = y[3 * j + 1] - yi1, d2 = y[3 * j + 2] - yi2;
+      const double len = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
+      const double x = fam.refLength[b];
+      const double t = fam.influence[b] * (iso * x + dev * ((len - x) - s.edp[b]));
+      const double sc = t / len;
+      fi0 += sc * d0 * V[j]; fi1 += sc * d1 * V[j]; fi2 += sc * d2 * V[j];
+      force[3 * j] -= sc * d0 * V[i]; force[3 * j + 1] -= sc * d1 * V[i]; force[3 * j + 2] -= sc * d2 * V[i];
+    }
+    force[3 * i] += fi0; force[3 * i + 1] += fi1; force[3 * i + 2] += fi2;
+  }
+}
+
+}  // namespace pf

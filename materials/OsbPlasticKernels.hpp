@@ -1,0 +1,48 @@
+#pragma once
+// Return mapping of the ordinary state-based J2 solid with linear isotropic (K) and kinematic (H)
+// hardening (Pirzadeh et al. 2024 §3.2; Mitchell 2011 when K = H = 0) in 3D, plane stress and plane
+// strain. One pass per node over its bonds, no allocation; the derivation and the deviations from the
+// paper (2D constants, plane-strain dilatation, plane-stress flow) are in docs/materials.md.
+#include "BondFamily.hpp"
+#include "Dimension.hpp"
+#include "OsbConstants.hpp"
+
+namespace pf {
+
+// Which weighted volume the yield-surface constants (Eqs. 36, 39, 46) are written with.
+enum class YieldNormalization {
+  Discrete,    // the node's own m (lattice-consistent: the 3D return is then exactly radial, 3 mu)
+  Continuum,   // 4 pi delta^5 / 5 (3D), pi h delta^4 / 2 (2D): the paper's constants
+};
+
+struct J2Parameters {
+  OsbConstants osb;
+  Dimension dim = Dimension::ThreeD;
+  double thickness = 0.0;          // 2D only (continuum normalisation)
+  double yieldStress = 0.0;        // sigma_y0
+  double isoHardening = 0.0;       // K
+  double kinHardening = 0.0;       // H
+  YieldNormalization norm = YieldNormalization::Discrete;
+  int maxIterations = 10;
+  double tolerance = 1e-12;        // relative residual of Eq. 50 (written as sigma_vm - sigma_bar)
+};
+
+// Committed (n, read) and trial (n+1, written) arrays. Node arrays are indexed by node, bond arrays by
+// bond. iterations may be null; vm/svm/theta are outputs.
+struct J2Fields {
+  const double* edpN; double* edp;            // Deviatoric_Plastic_Extension
+  const double* lambdaN; double* lambda;      // Lambda (accumulated)
+  const double* alphaN; double* alpha;        // Equivalent_Plastic_Strain
+  const double* qN; double* q;                // Back_Stress (scalar)
+  const double* signN; double* sign;          // Von_Mises_Sign: +1/-1, 0 = never set (taken as +1)
+  double* vonMises; double* signedVonMises; double* theta;
+  double* iterations;                         // Newton iterations of the last update (0 if elastic)
+};
+
+// Updates the plastic state of owned nodes [fam.begin, fam.end) from the committed state and adds the
+// force densities (f_i += T V_j, f_j -= T V_i) as ElasticMaterial does. Throws ConstitutiveFailure if
+// Newton does not reach the tolerance within maxIterations.
+void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
+                double* force);
+
+}  // namespace pf

@@ -1,0 +1,31 @@
+#pragma once
+// Adaptive dynamic relaxation (Kilic & Madenci 2010) for quasi-static load steps: a damped pseudo-time
+// march with a diagonal fictitious density from the stiffness bound (stable at unit pseudo-time step)
+// and a damping coefficient from the local Rayleigh quotient. A load step converges when the residual
+// (force, free dofs) is below Relative Tolerance x the load scale (reaction + body force) or below the
+// Absolute Tolerance; after Maximum Iterations it fails with SolverFailure.
+#include "Solver.hpp"
+
+namespace pf {
+
+struct AdrOptions {
+  int loadSteps = 1;
+  double relativeTolerance = 1e-6;  // of the reaction / applied-load norm
+  double absoluteTolerance = 0.0;   // on the residual force-density norm (Peridigm QuasiStatic meaning)
+  int maxIterations = 100000;
+  double safetyFactor = 1.0;        // multiplies the fictitious density
+  bool verbose = false;             // print the residual history of every step
+};
+
+class AdrSolver : public Solver {
+ public:
+  explicit AdrSolver(AdrOptions o) : opt_(o) {}
+  std::string name() const override { return "Adaptive Dynamic Relaxation"; }
+  void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+           StepObserver& observer) override;
+
+ private:
+  AdrOptions opt_;
+};
+
+}  // namespace pf

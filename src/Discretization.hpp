@@ -1,0 +1,37 @@
+#pragma once
+// Builds the point cloud from the "Discretization" list: Peridigm's PdQuickGrid and Text File, and
+// Periforge's "Rectangle With Holes" (2D) and "Box With Holes" (3D) generators with optional fictitious
+// boundary layers. Every rank builds the same cloud in the same order; bad files are InputErrors.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "InfluenceFunction.hpp"
+
+namespace pf {
+
+struct PointCloud {                     // every rank builds the same cloud, deterministically
+  std::vector<double> x;                // 3 per point; 2D clouds have z = 0
+  std::vector<double> volume;           // per point (2D: dx*dy*thickness)
+  std::vector<int> block;               // 1-based block id per point ("block_1" -> 1)
+  bool planar = false;
+  double thickness = 0.0;               // 2D generators set these
+  std::map<std::string, std::vector<int>> generatedNodeSets;  // 0-based, e.g. fictitious layer "Left Layer"
+  double spacing = 0.0;                 // grid spacing if uniform (for messages/defaults), else 0
+  Influence influence = Influence::One; // "Influence Function" of the Discretization list
+  int size() const { return (int)volume.size(); }
+};
+
+// defaultLayerWidth: width of fictitious layers when "Layer Width" is not given (the largest block
+// horizon, see maxBlockHorizon()); the 3-argument form has none and then requires "Layer Width".
+PointCloud buildDiscretization(const Teuchos::ParameterList& discretization, const std::string& inputFile,
+                               const std::string& inputDir);
+PointCloud buildDiscretization(const Teuchos::ParameterList& discretization, const std::string& inputFile,
+                               const std::string& inputDir, double defaultLayerWidth);
+
+// A deck-relative file name made usable from the working directory.
+std::string resolvePath(const std::string& name, const std::string& inputDir);
+
+}  // namespace pf

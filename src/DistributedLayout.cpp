@@ -1,0 +1,171 @@
+#include "DistributedLayout.hpp"
+
+#include <Epetra_Vector.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include "NeighborSearch.hpp"
+
+namespace pf {
+namespace {
+
+std::uint64_t spreadBits(std::uint64_t v) {  // 21 bits -> every third bit
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffffULL;
+  v = (v | v << 16) & 0x1f0000ff0000ffULL;
+  v = (v | v << 8) & 0x100f00f00f00f00fULL;
+  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+  v = (v | v << 2) & 0x1249249249249249ULL;
+  return v;
+}
+
+// Morton keys on the cloud's bounding box: points close in space get close keys.
+std::vector<std::uint64_t> mortonKeys(const std::vector<double>& coords) {
+  const std::size_t n = coords.size() / 3;
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (std::size_t p = 0; p < n; ++p)
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], coords[3 * p + d]);
+      hi[d] = std::max(hi[d], coords[3 * p + d]);
+    }
+  double scale = 0;
+  for (int d = 0; d < 3; ++d) scale = std::max(scale, hi[d] - lo[d]);
+  scale = scale > 0 ? 2097151.0 / scale : 0.0;
+  std::vector<std::uint64_t> key(n);
+  for (std::size_t p = 0; p < n; ++p) {
+    std::uint64_t k = 0;
+    for (int d = 0; d < 3; ++d) k |= spreadBits(static_cast<std::uint64_t>((coords[3 * p + d] - lo[d]) * scale)) << d;
+    key[p] = k;
+  }
+  return key;
+}
+
+}  // namespace
+
+DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords,
+                                     const std::vector<int>& owner, const std::vector<double>& horizon,
+                                     const std::vector<int>& block, Influence influence)
+    : comm_(comm) {
+  const int me = comm_.MyPID();
+  numGlobal_ = static_cast<int>(owner.size());
+  const std::vector<std::uint64_t> key = mortonKeys(coords);
+
+  std::vector<int> owned;
+  for (int p = 0; p < numGlobal_; ++p)
+    if (owner[p] == me) owned.push_back(p);
+  std::sort(owned.begin(), owned.end(), [&](int a, int b) {
+    if (block[a] != block[b]) return block[a] < block[b];
+    if (key[a] != key[b]) return key[a] < key[b];
+    return a < b;
+  });
+  numOwned_ = static_cast<int>(owned.size());
+
+  // Ghost candidates: points of other ranks inside the owned bounding box grown by the largest horizon.
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, hmax = 0;
+  for (int p : owned) {
+    hmax = std::max(hmax, horizon[p]);
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], coords[3 * p + d]);
+      hi[d] = std::max(hi[d], coords[3 * p + d]);
+    }
+  }
+  std::vector<int> candidates;
+  if (numOwned_ > 0) {
+    const double pad = hmax * (1.0 + 1e-9);
+    for (int p = 0; p < numGlobal_; ++p) {
+      if (owner[p] == me) continue;
+      bool inside = true;
+      for (int d = 0; d < 3 && inside; ++d) inside = coords[3 * p + d] >= lo[d] - pad && coords[3 * p + d] <= hi[d] + pad;
+      if (inside) candidates.push_back(p);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
+
+  std::vector<double> pts;
+  pts.reserve(3 * (owned.size() + candidates.size()));
+  for (int p : owned) pts.insert(pts.end(), &coords[3 * p], &coords[3 * p] + 3);
+  for (int p : candidates) pts.insert(pts.end(), &coords[3 * p], &coords[3 * p] + 3);
+  std::vector<double> h(numOwned_);
+  for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
+  buildFamilies(pts, numOwned_, h, family_);
+  family_.influence.resize(family_.numBonds());
+  for (int i = 0; i < numOwned_; ++i)
+    for (int b = family_.offsets[i]; b < family_.offsets[i + 1]; ++b)
+      family_.influence[b] = influenceValue(influence, family_.refLength[b], h[i]);
+
+  // Keep only candidates that some bond reaches; candidate order is preserved so rows stay sorted.
+  std::vector<int> ghostIndex(candidates.size(), -1);
+  for (int j : family_.neighbors)
+    if (j >= numOwned_) ghostIndex[j - numOwned_] = 0;
+  gids_ = owned;
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+    if (ghostIndex[c] == 0) {
+      ghostIndex[c] = static_cast<int>(gids_.size());
+      gids_.push_back(candidates[c]);
+    }
+  for (int& j : family_.neighbors)
+    if (j >= numOwned_) j = ghostIndex[j - numOwned_];
+
+  for (int i = 0; i < numOwned_; ++i) {
+    const int b = block[owned[i]];
+    if (blocks_.empty() || blocks_.back().blockId != b) blocks_.push_back({b, i, i});
+    blocks_.back().end = i + 1;
+  }
+
+  for (int k = 0; k < 2; ++k) {
+    const int ncomp = k == 1 ? 3 : 1;
+    owned_[k].reset(new Epetra_BlockMap(-1, numOwned_, gids_.data(), ncomp, 0, comm_));
+    overlap_[k].reset(new Epetra_BlockMap(-1, numOverlap(), gids_.data(), ncomp, 0, comm_));
+    import_[k].reset(new Epetra_Import(*overlap_[k], *owned_[k]));
+    export_[k].reset(new Epetra_Export(*overlap_[k], *owned_[k]));
+    std::vector<int> all;
+    if (me == 0) {
+      all.resize(numGlobal_);
+      std::iota(all.begin(), all.end(), 0);
+    }
+    root_[k].reset(new Epetra_BlockMap(-1, static_cast<int>(all.size()), all.data(), ncomp, 0, comm_));
+    rootImport_[k].reset(new Epetra_Import(*root_[k], *owned_[k]));
+  }
+}
+
+void DistributedLayout::importToOverlap(const double* owned, double* overlap, int ncomp) const {
+  const int k = ncomp == 3 ? 1 : 0;
+  Epetra_Vector src(View, *owned_[k], const_cast<double*>(owned));
+  Epetra_Vector dst(View, *overlap_[k], overlap);
+  if (dst.Import(src, *import_[k], Insert) != 0) throw std::runtime_error("Epetra Import to ghosts failed");
+}
+
+void DistributedLayout::exportAdd(const double* overlap, double* owned, int ncomp) const {
+  const int k = ncomp == 3 ? 1 : 0;
+  Epetra_Vector src(View, *overlap_[k], const_cast<double*>(overlap));
+  Epetra_Vector dst(View, *owned_[k], owned);
+  dst.PutScalar(0.0);
+  if (dst.Export(src, *export_[k], Add) != 0) throw std::runtime_error("Epetra Export from ghosts failed");
+}
+
+std::vector<double> DistributedLayout::gatherToRoot(const double* owned, int ncomp) const {
+  const int k = ncomp == 3 ? 1 : 0;
+  std::vector<double> out(comm_.MyPID() == 0 ? static_cast<std::size_t>(ncomp) * numGlobal_ : 0);
+  Epetra_Vector src(View, *owned_[k], const_cast<double*>(owned));
+  Epetra_Vector dst(View, *root_[k], out.data());
+  if (dst.Import(src, *rootImport_[k], Insert) != 0) throw std::runtime_error("Epetra gather to rank 0 failed");
+  return out;
+}
+
+double DistributedLayout::sum(double v) const {
+  double g = 0;
+  comm_.SumAll(&v, &g, 1);
+  return g;
+}
+
+double DistributedLayout::max(double v) const {
+  double g = 0;
+  comm_.MaxAll(&v, &g, 1);
+  return g;
+}
+
+}  // namespace pf

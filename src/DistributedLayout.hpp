@@ -1,0 +1,64 @@
+#pragma once
+// The one place Periforge touches Epetra: owned and overlap (owned + ghost) maps of the points, the
+// Import that copies owned values to ghosts and the Export that adds ghost contributions back. Owned
+// points are ordered by block, then along a Morton curve, so a family sits close in memory; bonds of
+// the owned points are built here once, on reference positions, in overlap-local indices.
+#include <Epetra_BlockMap.h>
+#include <Epetra_Export.h>
+#include <Epetra_Import.h>
+#include <Epetra_Map.h>
+#include <Epetra_MpiComm.h>
+
+#include <memory>
+#include <vector>
+
+#include "BondFamily.hpp"
+#include "InfluenceFunction.hpp"
+
+namespace pf {
+
+struct BlockRange {
+  int blockId;      // 1-based block id of the cloud
+  int begin, end;   // owned-local node range
+};
+
+class DistributedLayout {
+ public:
+  // Whole cloud on every rank: coords (3 per point), owner rank, horizon and block id per point; the
+  // influence function sets each bond's omega from its length and its owner's horizon.
+  DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords, const std::vector<int>& owner,
+                    const std::vector<double>& horizon, const std::vector<int>& block, Influence influence);
+
+  int numOwned() const { return numOwned_; }
+  int numOverlap() const { return static_cast<int>(gids_.size()); }
+  int numGlobal() const { return numGlobal_; }
+  const std::vector<int>& gids() const { return gids_; }      // overlap-local -> cloud index (0-based)
+  const std::vector<BlockRange>& blocks() const { return blocks_; }
+  const BondFamily& family() const { return family_; }
+  const Epetra_MpiComm& comm() const { return comm_; }
+  int rank() const { return comm_.MyPID(); }
+  int size() const { return comm_.NumProc(); }
+
+  // overlap[0, ncomp*numOwned) = owned; ghosts filled from their owners.
+  void importToOverlap(const double* owned, double* overlap, int ncomp) const;
+  // owned = sum over ranks of overlap contributions to each owned point (owned entries included).
+  void exportAdd(const double* overlap, double* owned, int ncomp) const;
+  // Rank 0 gets ncomp values per point in cloud order; other ranks get an empty vector.
+  std::vector<double> gatherToRoot(const double* owned, int ncomp) const;
+
+  double sum(double v) const;
+  double max(double v) const;
+
+ private:
+  Epetra_MpiComm comm_;
+  int numOwned_ = 0, numGlobal_ = 0;
+  std::vector<int> gids_;
+  std::vector<BlockRange> blocks_;
+  BondFamily family_;
+  // maps and transfers for 1- and 3-component data, index = ncomp == 3
+  std::unique_ptr<Epetra_BlockMap> owned_[2], overlap_[2], root_[2];
+  std::unique_ptr<Epetra_Import> import_[2], rootImport_[2];
+  std::unique_ptr<Epetra_Export> export_[2];
+};
+
+}  // namespace pf

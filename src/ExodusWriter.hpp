@@ -1,0 +1,56 @@
+#pragma once
+// Merged ExodusII output laid out like Peridigm's, so that gold files from Peridigm and
+// Periforge results can be compared with scripts/exodiff.py (see docs/output.md).
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+// Writes one merged file. Construct it on rank 0 only: the ExodusII C library is not
+// thread/rank aware and every array passed in is already gathered in global-id order.
+//
+// Layout: 3 spatial dimensions always (planar runs get z = as given, usually 0, and zero Z
+// components) because Peridigm output is 3D and exodiff compares DisplacementZ etc.;
+// one element block per distinct block id, SPHERE elements with one node each; element of
+// node g has element number g+1; the initial state is expected as the first writeStep.
+class ExodusWriter {
+ public:
+  // coords: 3 per node. blockIdPerNode: 1-based block id per node.
+  // nodalVectorNames "Displacement" -> variables DisplacementX, DisplacementY, DisplacementZ.
+  // Throws std::runtime_error (naming the file) on any ExodusII failure or bad sizes.
+  ExodusWriter(const std::string& filename, const std::vector<double>& coords,
+               const std::vector<int>& blockIdPerNode, bool planar,
+               const std::vector<std::string>& nodalVectorNames,
+               const std::vector<std::string>& nodalScalarNames,
+               const std::vector<std::string>& elementScalarNames);
+  ~ExodusWriter();
+
+  ExodusWriter(const ExodusWriter&) = delete;
+  ExodusWriter& operator=(const ExodusWriter&) = delete;
+
+  // Every declared name must be present with the right length (3*N for vectors, N otherwise);
+  // element scalars are given per node in global order. Extra map entries are ignored so the
+  // caller can pass one big field map. The file is synced after each step.
+  void writeStep(double time, const std::map<std::string, std::vector<double>>& nodalVectors,
+                 const std::map<std::string, std::vector<double>>& nodalScalars,
+                 const std::map<std::string, std::vector<double>>& elementScalars);
+
+  int numStepsWritten() const { return step_; }
+  const std::string& filename() const { return filename_; }
+
+ private:
+  void check(int status, const char* what) const;
+
+  std::string filename_;
+  int exoid_ = -1;
+  int step_ = 0;
+  std::size_t numNodes_ = 0;
+  bool planar_ = false;
+  std::vector<std::string> vectorNames_, scalarNames_, elementNames_;
+  std::vector<int> blockIds_;                          // sorted distinct ids
+  std::vector<std::vector<std::size_t>> blockNodes_;  // per block: node indices (0-based)
+};
+
+}  // namespace pf

@@ -1,0 +1,126 @@
+#include "Expression.hpp"
+
+#include <cctype>
+
+#include <RTC_FunctionRTC.hh>
+
+#include "InputError.hpp"
+#include "InputSchema.hpp"
+
+namespace pf {
+
+namespace {
+
+std::vector<std::string> identifiers(const std::string& s) {
+  std::vector<std::string> ids;
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const unsigned char c = s[i];
+    if (std::isalpha(c) || c == '_') {
+      std::size_t j = i;
+      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) ++j;
+      ids.push_back(s.substr(i, j - i));
+      i = j;
+    } else if (std::isdigit(c) || c == '.') {
+      // Skip a number whole so the exponent in "1e-3" is not read as an identifier.
+      std::size_t j = i;
+      while (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '.')) {
+        if ((s[j] == 'e' || s[j] == 'E') && j + 1 < s.size() && (s[j + 1] == '-' || s[j + 1] == '+')) ++j;
+        ++j;
+      }
+      i = j;
+    } else {
+      ++i;
+    }
+  }
+  return ids;
+}
+
+// Peridigm decks give a bare right-hand side ("0.0"); full bodies assign "value" themselves.
+bool assignsValue(const std::string& s) {
+  for (std::size_t pos = s.find("value"); pos != std::string::npos; pos = s.find("value", pos + 1)) {
+    if (pos > 0 && (std::isalnum(static_cast<unsigned char>(s[pos - 1])) || s[pos - 1] == '_')) continue;
+    std::size_t j = pos + 5;
+    if (j < s.size() && (std::isalnum(static_cast<unsigned char>(s[j])) || s[j] == '_')) continue;
+    while (j < s.size() && std::isspace(static_cast<unsigned char>(s[j]))) ++j;
+    if (j < s.size() && s[j] == '=' && (j + 1 >= s.size() || s[j + 1] != '=')) return true;
+  }
+  return false;
+}
+
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
+}  // namespace
+
+Expression::Expression(const std::string& text, const std::string& context) : text_(text), context_(context) {
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(context + ": expression is empty");
+  for (const std::string& id : identifiers(text))
+    if (id == "x" || id == "y" || id == "z") dependsOnSpace_ = true;
+  std::string body = text;
+  if (!assignsValue(body)) {
+    body = "value = " + body;
+  }
+  const std::size_t last = body.find_last_not_of(" \t\r\n");
+  if (body[last] != ';' && body[last] != '}') body += ";";
+  fn_ = std::make_unique<PG_RuntimeCompiler::Function>(5, "pf_expression");
+  for (const char* v : {"x", "y", "z", "t", "value"}) fn_->addVar("double", v);
+  if (!fn_->addBody(body))
+    throw InputError(context + ": cannot compile expression '" + oneLine(text) + "': " + oneLine(fn_->getErrors()));
+  // A trial run catches run-time errors (e.g. an unknown function) at input time, not mid-solve.
+  (*this)(0.0, 0.0, 0.0, 0.0);
+}
+
+Expression::~Expression() = default;
+
+double Expression::operator()(double x, double y, double z, double t) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  fn_->varValueFill(0, x);
+  fn_->varValueFill(1, y);
+  fn_->varValueFill(2, z);
+  fn_->varValueFill(3, t);
+  fn_->varValueFill(4, 0.0);
+  if (!fn_->execute())
+    throw InputError(context_ + ": cannot evaluate expression '" + oneLine(text_) + "': " +
+                     oneLine(fn_->getErrors()));
+  return fn_->getValueOfVar("value");
+}
+
+std::vector<BoundaryCondition> parseBoundaryConditions(const Teuchos::ParameterList& bcs,
+                                                       const std::map<std::string, std::vector<int>>& nodeSets,
+                                                       const std::string& inputFile) {
+  std::vector<BoundaryCondition> out;
+  for (auto it = bcs.begin(); it != bcs.end(); ++it) {
+    if (!bcs.entry(it).isList()) continue;
+    const std::string& name = bcs.name(it);
+    const std::string path = inputFile + ": Boundary Conditions/" + name;
+    const Teuchos::ParameterList& b = bcs.sublist(name);
+    const std::string type = getText(b, "Type", "");
+    if (type == "Node Set Region") continue;
+    BoundaryCondition bc;
+    bc.name = name;
+    if (type == "Prescribed Displacement") bc.kind = BoundaryCondition::Kind::PrescribedDisplacement;
+    else if (type == "Initial Displacement") bc.kind = BoundaryCondition::Kind::InitialDisplacement;
+    else if (type == "Initial Velocity") bc.kind = BoundaryCondition::Kind::InitialVelocity;
+    else if (type == "Body Force") bc.kind = BoundaryCondition::Kind::BodyForce;
+    else throw InputError(path + ": unknown 'Type' = '" + type + "'");
+    bc.nodeSet = getText(b, "Node Set", "");
+    if (!nodeSets.count(bc.nodeSet))
+      throw InputError(path + ": 'Node Set' = '" + bc.nodeSet + "' is not a defined node set");
+    const std::string c = getText(b, "Coordinate", "");
+    if (c == "x") bc.coordinate = 0;
+    else if (c == "y") bc.coordinate = 1;
+    else if (c == "z") bc.coordinate = 2;
+    else throw InputError(path + ": 'Coordinate' must be x, y or z (got '" + c + "')");
+    if (!b.isParameter("Value")) throw InputError(path + ": missing required parameter 'Value'");
+    bc.value = std::make_shared<Expression>(scalarAsText(b.getEntry("Value")), path + "/Value");
+    out.push_back(std::move(bc));
+  }
+  return out;
+}
+
+}  // namespace pf

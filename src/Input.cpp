@@ -1,0 +1,60 @@
+#include "Input.hpp"
+
+#include <fstream>
+
+#include <Teuchos_XMLParameterListCoreHelpers.hpp>
+#include <Teuchos_YamlParameterListCoreHelpers.hpp>
+
+#include "InputError.hpp"
+
+namespace pf {
+
+namespace {
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// Teuchos messages span many lines with source locations; keep the first meaningful line so the
+// user sees one line.
+std::string firstLine(const std::string& what) {
+  std::string out;
+  std::size_t start = 0;
+  while (start < what.size()) {
+    std::size_t end = what.find('\n', start);
+    if (end == std::string::npos) end = what.size();
+    std::string line = what.substr(start, end - start);
+    start = end + 1;
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (line.find(".cpp:") != std::string::npos || line.find(".hpp:") != std::string::npos ||
+        line.find("Throw number") != std::string::npos || line.find("Throw test") != std::string::npos)
+      continue;
+    out = line;
+    break;
+  }
+  return out.empty() ? std::string("parse error") : out;
+}
+
+}  // namespace
+
+std::string inputDirectory(const std::string& path) {
+  const std::size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos) return ".";
+  if (slash == 0) return "/";
+  return path.substr(0, slash);
+}
+
+Teuchos::RCP<Teuchos::ParameterList> readInput(const std::string& path) {
+  {
+    std::ifstream probe(path);
+    if (!probe) throw InputError(path + ": cannot open input file");
+  }
+  const bool yaml = endsWith(path, ".yaml") || endsWith(path, ".yml");
+  try {
+    return yaml ? Teuchos::getParametersFromYamlFile(path) : Teuchos::getParametersFromXmlFile(path);
+  } catch (const std::exception& e) {
+    throw InputError(path + ": cannot parse " + (yaml ? "YAML" : "XML") + " input: " + firstLine(e.what()));
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,73 @@
+#include "Model.hpp"
+
+#include <algorithm>
+
+#include "Expression.hpp"
+
+namespace pf {
+
+Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> overlapCoords,
+             std::vector<double> overlapVolume, std::vector<BlockModel> blocks)
+    : layout_(std::move(layout)), x_(std::move(overlapCoords)), volume_(std::move(overlapVolume)),
+      blocks_(std::move(blocks)) {
+  const int n = numOwned();
+  m_.assign(n, 0.0);
+  density_.assign(n, 0.0);
+  bound_.assign(n, 0.0);
+  std::vector<StateSpec> specs;
+  for (const BlockModel& b : blocks_) {
+    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+    computeWeightedVolume(view, m_.data());
+    b.material->stiffnessBound(view, bound_.data());
+    for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
+    for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);
+  }
+  state_.allocate(specs, n, layout_->family().numBonds());
+  const std::size_t no = static_cast<std::size_t>(layout_->numOverlap());
+  uOverlap_.assign(3 * no, 0.0);
+  yOverlap_.assign(3 * no, 0.0);
+  fOverlap_.assign(3 * no, 0.0);
+  prescribed_.assign(3 * static_cast<std::size_t>(n), 0);
+}
+
+void Model::internalForce(const double* u, double* f) {
+  layout_->importToOverlap(u, uOverlap_.data(), 3);
+  for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
+  std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
+  for (const BlockModel& b : blocks_) {
+    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+    b.material->computeForce(view, yOverlap_.data(), state_, fOverlap_.data());
+  }
+  layout_->exportAdd(fOverlap_.data(), f, 3);
+}
+
+void Model::addPrescribedDisplacement(NodalLoad load) {
+  for (int i : load.nodes) prescribed_[3 * i + load.coordinate] = 1;
+  prescribedLoads_.push_back(std::move(load));
+}
+
+void Model::addBodyForce(NodalLoad load) { bodyForces_.push_back(std::move(load)); }
+
+namespace {
+// Evaluates a load's expression at its nodes; an expression without x, y, z is evaluated once.
+template <class Apply>
+void evaluate(const NodalLoad& load, const std::vector<double>& x, double t, Apply apply) {
+  if (!load.value->dependsOnSpace()) {
+    const double v = (*load.value)(0.0, 0.0, 0.0, t);
+    for (int i : load.nodes) apply(3 * i + load.coordinate, v);
+    return;
+  }
+  for (int i : load.nodes) apply(3 * i + load.coordinate, (*load.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t));
+}
+}  // namespace
+
+void Model::applyPrescribed(double t, double* u) const {
+  for (const NodalLoad& l : prescribedLoads_) evaluate(l, x_, t, [u](int k, double v) { u[k] = v; });
+}
+
+void Model::bodyForce(double t, double* b) const {
+  std::fill(b, b + numDofs(), 0.0);
+  for (const NodalLoad& l : bodyForces_) evaluate(l, x_, t, [b](int k, double v) { b[k] += v; });
+}
+
+}  // namespace pf

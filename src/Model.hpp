@@ -1,0 +1,79 @@
+#pragma once
+// The discrete peridynamic body a solver drives: owned degrees of freedom, internal force density from
+// the blocks' materials, lumped density, stiffness bound, boundary conditions and state commit/rollback.
+// Solvers see only this class (and never which material sits behind it).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "DistributedLayout.hpp"
+#include "Material.hpp"
+#include "StateStore.hpp"
+
+namespace pf {
+
+class Expression;
+
+// One block's share of the body: its material applies to owned nodes [begin, end).
+struct BlockModel {
+  int blockId = 0;
+  std::string name;          // "block_1"
+  std::string materialName;  // sub-list name in Materials
+  double horizon = 0;
+  int begin = 0, end = 0;
+  std::shared_ptr<const Material> material;
+};
+
+// A displacement, velocity or body-force component imposed on owned nodes.
+struct NodalLoad {
+  std::vector<int> nodes;  // owned-local indices
+  int coordinate = 0;
+  std::shared_ptr<const Expression> value;
+};
+
+class Model {
+ public:
+  Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> overlapCoords, std::vector<double> overlapVolume,
+        std::vector<BlockModel> blocks);
+
+  const DistributedLayout& layout() const { return *layout_; }
+  int numOwned() const { return layout_->numOwned(); }
+  int numDofs() const { return 3 * numOwned(); }
+
+  // Internal force density f (3 per owned node) for displacements u (3 per owned node). Computes the
+  // materials' trial state. Throws ConstitutiveFailure if a material cannot update.
+  void internalForce(const double* u, double* f);
+  void commit() { state_.commit(); }
+  void rollback() { state_.rollback(); }
+
+  const std::vector<double>& density() const { return density_; }         // per owned node
+  const std::vector<double>& stiffnessBound() const { return bound_; }    // per owned node
+  const std::vector<double>& volume() const { return volume_; }            // per overlap node
+  const std::vector<double>& coordinates() const { return x_; }            // per overlap node
+  const std::vector<double>& weightedVolume() const { return m_; }         // per owned node
+  const std::vector<BlockModel>& blocks() const { return blocks_; }
+  StateStore& state() { return state_; }
+  int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
+
+  // Boundary conditions
+  void addPrescribedDisplacement(NodalLoad load);
+  void addBodyForce(NodalLoad load);
+  void applyPrescribed(double t, double* u) const;   // sets prescribed components of u at time t
+  void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
+  const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
+  bool hasBodyForce() const { return !bodyForces_.empty(); }
+
+  double sum(double v) const { return layout_->sum(v); }
+  double max(double v) const { return layout_->max(v); }
+
+ private:
+  std::unique_ptr<DistributedLayout> layout_;
+  std::vector<double> x_, volume_, m_, density_, bound_;
+  std::vector<BlockModel> blocks_;
+  StateStore state_;
+  std::vector<double> uOverlap_, yOverlap_, fOverlap_;
+  std::vector<NodalLoad> prescribedLoads_, bodyForces_;
+  std::vector<char> prescribed_;
+};
+
+}  // namespace pf

@@ -1,0 +1,28 @@
+#pragma once
+// Builds the distributed Model from a validated input list: discretization, blocks and materials,
+// Zoltan partition, ghosting, bonds, node sets and boundary conditions. Every rank calls it.
+#include <Epetra_MpiComm.h>
+#include <Teuchos_ParameterList.hpp>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Discretization.hpp"
+#include "Expression.hpp"
+#include "Model.hpp"
+
+namespace pf {
+
+struct Problem {
+  PointCloud cloud;                                      // the whole cloud (every rank)
+  std::map<std::string, std::vector<int>> nodeSets;      // cloud indices
+  std::unique_ptr<Model> model;
+  std::vector<NodalLoad> initialDisplacements, initialVelocities;
+  std::vector<std::string> prescribedNodeSets;           // node sets carrying a Prescribed Displacement
+};
+
+Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inputFile, const Epetra_MpiComm& comm);
+
+}  // namespace pf

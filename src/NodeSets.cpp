@@ -1,0 +1,144 @@
+#include "NodeSets.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "InputError.hpp"
+#include "InputSchema.hpp"
+
+namespace pf {
+
+using PL = Teuchos::ParameterList;
+
+namespace {
+
+[[noreturn]] void fail(const std::string& file, const std::string& path, const std::string& msg) {
+  throw InputError(file + ": " + path + ": " + msg);
+}
+
+bool allIntegers(const std::vector<std::string>& words) {
+  for (const std::string& w : words)
+    if (w.empty() || w.find_first_not_of("0123456789+-") != std::string::npos) return false;
+  return !words.empty();
+}
+
+// Ids are 1-based global ids in the order of the cloud (Peridigm's convention).
+std::vector<int> idsToIndices(const std::vector<std::string>& words, int n, const std::string& file,
+                              const std::string& path, const std::string& where) {
+  std::vector<int> out;
+  out.reserve(words.size());
+  for (const std::string& w : words) {
+    long id = 0;
+    try {
+      std::size_t used = 0;
+      id = std::stol(w, &used);
+      if (used != w.size()) throw std::invalid_argument(w);
+    } catch (const std::exception&) {
+      fail(file, path, where + "'" + w + "' is not a node id");
+    }
+    if (id < 1 || id > n)
+      fail(file, path, where + "node id " + w + " does not exist (the discretization has ids 1.." +
+                           std::to_string(n) + ")");
+    out.push_back(static_cast<int>(id - 1));
+  }
+  return out;
+}
+
+std::vector<int> region(const PL& r, const PointCloud& c, const std::string& file, const std::string& path) {
+  std::vector<int> out;
+  const int n = c.size();
+  if (r.isParameter("Face")) {
+    const std::string f = getText(r, "Face", "");
+    const int a = f.back() - 'X';
+    if (a < 0 || a > 2 || (f.compare(0, 3, "Min") != 0 && f.compare(0, 3, "Max") != 0))
+      fail(file, path, "'Face' = '" + f + "' is not one of Min X, Max X, Min Y, Max Y, Min Z, Max Z");
+    const bool low = f.compare(0, 3, "Min") == 0;
+    double ext = low ? std::numeric_limits<double>::max() : std::numeric_limits<double>::lowest();
+    double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
+    for (int i = 0; i < n; ++i) {
+      const double v = c.x[3 * i + a];
+      ext = low ? std::min(ext, v) : std::max(ext, v);
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    // Default: half a grid spacing catches one row of a lattice and nothing else.
+    double tol = getNumber(r, "Tolerance", 0.0);
+    if (tol <= 0.0) tol = c.spacing > 0.0 ? 0.5 * c.spacing : 1e-9 * std::max(1.0, hi - lo);
+    for (int i = 0; i < n; ++i)
+      if (std::fabs(c.x[3 * i + a] - ext) <= tol) out.push_back(i);
+    return out;
+  }
+  const char* names[3] = {"X", "Y", "Z"};
+  double lo[3], hi[3];
+  double scale = 0.0;
+  for (int i = 0; i < 3 * n; ++i) scale = std::max(scale, std::fabs(c.x[i]));
+  const double slack = 1e-12 * std::max(1.0, scale);  // bounds are inclusive; round-off must not exclude a row
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = getNumber(r, std::string(names[a]) + " Min", std::numeric_limits<double>::lowest());
+    hi[a] = getNumber(r, std::string(names[a]) + " Max", std::numeric_limits<double>::max());
+    if (lo[a] > hi[a]) fail(file, path, std::string("'") + names[a] + " Min' exceeds '" + names[a] + " Max'");
+  }
+  for (int i = 0; i < n; ++i) {
+    bool in = true;
+    for (int a = 0; a < 3 && in; ++a) {
+      const double v = c.x[3 * i + a];
+      in = v >= lo[a] - slack && v <= hi[a] + slack;
+    }
+    if (in) out.push_back(i);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::map<std::string, std::vector<int>> resolveNodeSets(const PL& bcs, const PointCloud& cloud,
+                                                        const std::string& inputFile, const std::string& inputDir) {
+  std::map<std::string, std::vector<int>> sets = cloud.generatedNodeSets;
+  std::vector<int>& all = sets["All"];
+  all.resize(cloud.size());
+  for (int i = 0; i < cloud.size(); ++i) all[i] = i;
+
+  for (auto it = bcs.begin(); it != bcs.end(); ++it) {
+    const std::string& name = bcs.name(it);
+    const std::string path = "Boundary Conditions/" + name;
+    std::vector<int> ids;
+    if (bcs.entry(it).isList()) {
+      const PL& r = bcs.sublist(name);
+      if (getText(r, "Type", "") != "Node Set Region") continue;
+      ids = region(r, cloud, inputFile, path);
+    } else {
+      const std::string text = scalarAsText(bcs.entry(it));
+      const std::vector<std::string> words = splitWords(text);
+      if (allIntegers(words)) {
+        ids = idsToIndices(words, cloud.size(), inputFile, path, "");
+      } else {
+        const std::string full = resolvePath(text, inputDir);
+        std::ifstream in(full);
+        if (!in) fail(inputFile, path, "cannot open node set file '" + full + "'");
+        std::string line;
+        int lineNo = 0;
+        while (std::getline(in, line)) {
+          ++lineNo;
+          const std::size_t hash = line.find('#');
+          if (hash != std::string::npos) line.erase(hash);
+          const std::vector<int> more =
+              idsToIndices(splitWords(line), cloud.size(), inputFile, path, full + ":" + std::to_string(lineNo) + ": ");
+          ids.insert(ids.end(), more.begin(), more.end());
+        }
+      }
+    }
+    if (sets.count(name)) fail(inputFile, path, "node set name clashes with a generated or built-in node set");
+    std::sort(ids.begin(), ids.end());
+    ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+    if (ids.empty()) fail(inputFile, path, "node set '" + name + "' is empty");
+    sets[name] = std::move(ids);
+  }
+  for (const auto& [name, ids] : cloud.generatedNodeSets)
+    if (ids.empty()) fail(inputFile, "Discretization", "generated node set '" + name + "' is empty");
+  return sets;
+}
+
+}  // namespace pf

@@ -1,0 +1,192 @@
+#include "OutputManager.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ExodusWriter.hpp"
+#include "HistoryWriter.hpp"
+#include "InputError.hpp"
+#include "InputSchema.hpp"
+
+namespace pf {
+namespace {
+
+const std::vector<std::string> kVectors = {"Displacement", "Velocity", "Force_Density", "Force",
+                                           "Model_Coordinates", "Coordinates"};
+// Scalars the core itself provides; everything else must be a material output field.
+const std::vector<std::string> kCoreScalars = {"Weighted_Volume", "Element_Id", "Proc_Num", "Number_Of_Neighbors",
+                                               "Volume"};
+
+// Peridigm requests "Element_Id" but writes the variable as "ID"; exodiff against its gold files needs the same.
+std::string exodusName(const std::string& var) { return var == "Element_Id" ? "ID" : var; }
+
+bool contains(const std::vector<std::string>& v, const std::string& s) {
+  return std::find(v.begin(), v.end(), s) != v.end();
+}
+
+}  // namespace
+
+OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::string& inputFile, Problem& problem)
+    : pb_(problem), model_(*problem.model) {
+  const bool root = model_.layout().rank() == 0;
+  const StateStore& state = model_.state();
+  auto checkVariable = [&](const std::string& var, const std::string& where) {
+    if (contains(kVectors, var) || contains(kCoreScalars, var)) return;
+    if (state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node) return;
+    throw InputError(inputFile + ": " + where + ": '" + var + "' is not computed by any material of this run");
+  };
+
+  if (input.isSublist("Output")) {
+    const Teuchos::ParameterList& out = input.sublist("Output");
+    const std::string stem = getText(out, "Output Filename", "periforge");
+    exodus_ = getText(out, "Output File Type", "ExodusII") == "ExodusII";
+    exodusName_ = stem + ".e";
+    historyName_ = stem + ".csv";
+    frequency_ = getInteger(out, "Output Frequency", 1);
+    if (frequency_ < 1) throw InputError(inputFile + ": Output: 'Output Frequency' must be at least 1");
+    if (out.isSublist("Output Variables")) {
+      const Teuchos::ParameterList& vars = out.sublist("Output Variables");
+      for (auto it = vars.begin(); it != vars.end(); ++it) {
+        const std::string var = vars.name(it);
+        if (!getFlag(vars, var, false)) continue;
+        checkVariable(var, "Output/Output Variables");
+        (contains(kVectors, var) ? nodalVectors_ : elementScalars_).push_back(var);
+      }
+    }
+    if (out.isSublist("Probes")) {
+      const Teuchos::ParameterList& pl = out.sublist("Probes");
+      for (auto it = pl.begin(); it != pl.end(); ++it) {
+        const std::string name = pl.name(it);
+        const Teuchos::ParameterList& p = pl.sublist(name);
+        const double at[3] = {getNumber(p, "X"), getNumber(p, "Y"), getNumber(p, "Z", 0.0)};
+        // Nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one.
+        int best = -1;
+        double bestD = std::numeric_limits<double>::max();
+        for (int q = 0; q < pb_.cloud.size(); ++q) {
+          double d = 0;
+          for (int c = 0; c < 3; ++c) d += (pb_.cloud.x[3 * q + c] - at[c]) * (pb_.cloud.x[3 * q + c] - at[c]);
+          if (d < bestD) { bestD = d; best = q; }
+        }
+        Probe probe{name, -1, splitWords(getText(p, "Variables", ""))};
+        if (probe.variables.empty()) throw InputError(inputFile + ": Output/Probes/" + name + ": 'Variables' is empty");
+        for (const std::string& var : probe.variables) checkVariable(var, "Output/Probes/" + name);
+        const std::vector<int>& gids = model_.layout().gids();
+        for (int i = 0; i < model_.numOwned(); ++i)
+          if (gids[i] == best) probe.local = i;
+        probes_.push_back(probe);
+        if (root) std::printf("probe %s: node %d at (%g, %g, %g)\n", name.c_str(), best + 1, pb_.cloud.x[3 * best],
+                              pb_.cloud.x[3 * best + 1], pb_.cloud.x[3 * best + 2]);
+      }
+    }
+    std::vector<std::string> sets = pb_.prescribedNodeSets;
+    if (out.isParameter("Reactions")) sets = splitWords(getText(out, "Reactions", ""));
+    for (const std::string& s : sets) {
+      auto it = pb_.nodeSets.find(s);
+      if (it == pb_.nodeSets.end()) throw InputError(inputFile + ": Output: 'Reactions' names unknown node set '" + s + "'");
+      Reaction r{s, {}};
+      const std::vector<int>& gids = model_.layout().gids();
+      std::vector<char> in(pb_.cloud.size(), 0);
+      for (int q : it->second) in[q] = 1;
+      for (int i = 0; i < model_.numOwned(); ++i)
+        if (in[gids[i]]) r.nodes.push_back(i);
+      reactions_.push_back(r);
+    }
+  }
+  if (historyName_.empty()) return;  // no Output list: nothing is written
+
+  if (root) {
+    std::vector<std::string> cols = {"time", "step"};
+    auto label = [](std::string s) {
+      std::replace(s.begin(), s.end(), ' ', '_');
+      return s;
+    };
+    for (const Reaction& r : reactions_)
+      for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(r.set) + "_" + c);
+    for (const Probe& p : probes_)
+      for (const std::string& var : p.variables) {
+        if (contains(kVectors, var))
+          for (const char* c : {"X", "Y", "Z"}) cols.push_back("Probe_" + label(p.name) + "_" + var + c);
+        else
+          cols.push_back("Probe_" + label(p.name) + "_" + var);
+      }
+    history_ = std::make_unique<HistoryWriter>(historyName_, cols);
+    if (exodus_) {
+      std::vector<std::string> scalars, elements;
+      for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
+      writer_ = std::make_unique<ExodusWriter>(exodusName_, pb_.cloud.x, pb_.cloud.block, pb_.cloud.planar,
+                                               nodalVectors_, scalars, elements);
+    }
+  }
+  bodyForce_.assign(model_.numDofs(), 0.0);
+}
+
+OutputManager::~OutputManager() = default;
+
+double OutputManager::nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u,
+                                const std::vector<double>& v, const std::vector<double>& f) const {
+  const std::vector<double>& x = model_.coordinates();
+  if (var == "Displacement") return u[3 * i + comp];
+  if (var == "Velocity") return v[3 * i + comp];
+  if (var == "Force_Density") return f[3 * i + comp];
+  if (var == "Force") return f[3 * i + comp] * model_.volume()[i];
+  if (var == "Model_Coordinates") return x[3 * i + comp];
+  if (var == "Coordinates") return x[3 * i + comp] + u[3 * i + comp];
+  if (var == "Weighted_Volume") return model_.weightedVolume()[i];
+  if (var == "Element_Id") return model_.layout().gids()[i] + 1;
+  if (var == "Proc_Num") return model_.layout().rank();
+  if (var == "Number_Of_Neighbors") return model_.numNeighbors(i);
+  if (var == "Volume") return model_.volume()[i];
+  return model_.state().committed(var)[i];
+}
+
+std::vector<double> OutputManager::ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
+                                              const std::vector<double>& v, const std::vector<double>& f) const {
+  std::vector<double> out(static_cast<std::size_t>(ncomp) * model_.numOwned());
+  for (int i = 0; i < model_.numOwned(); ++i)
+    for (int c = 0; c < ncomp; ++c) out[ncomp * i + c] = nodeValue(var, c, i, u, v, f);
+  return out;
+}
+
+void OutputManager::onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
+                           const std::vector<double>& f) {
+  if (historyName_.empty() || report.step % frequency_ != 0) return;
+  const bool root = model_.layout().rank() == 0;
+  const Epetra_MpiComm& comm = model_.layout().comm();
+
+  // History row: reactions and probes are reduced over ranks (a probe lives on one rank, others add 0).
+  std::vector<double> local;
+  if (model_.hasBodyForce()) model_.bodyForce(report.time, bodyForce_.data());
+  for (const Reaction& r : reactions_)
+    for (int c = 0; c < 3; ++c) {
+      double s = 0;
+      for (int i : r.nodes) s -= (f[3 * i + c] + bodyForce_[3 * i + c]) * model_.volume()[i];
+      local.push_back(s);
+    }
+  for (const Probe& p : probes_)
+    for (const std::string& var : p.variables) {
+      const int ncomp = contains(kVectors, var) ? 3 : 1;
+      for (int c = 0; c < ncomp; ++c) local.push_back(p.local >= 0 ? nodeValue(var, c, p.local, u, v, f) : 0.0);
+    }
+  std::vector<double> global(local.size());
+  if (!local.empty()) comm.SumAll(local.data(), global.data(), static_cast<int>(local.size()));
+  if (root) {
+    std::vector<double> row = {report.time, static_cast<double>(report.step)};
+    row.insert(row.end(), global.begin(), global.end());
+    history_->writeRow(row);
+  }
+
+  if (!exodus_) return;
+  std::map<std::string, std::vector<double>> vectors, scalars, none;
+  for (const std::string& var : nodalVectors_) {
+    std::vector<double> owned = ownedField(var, 3, u, v, f);
+    vectors[var] = model_.layout().gatherToRoot(owned.data(), 3);
+  }
+  for (const std::string& var : elementScalars_) {
+    std::vector<double> owned = ownedField(var, 1, u, v, f);
+    scalars[exodusName(var)] = model_.layout().gatherToRoot(owned.data(), 1);
+  }
+  if (root) writer_->writeStep(report.time, vectors, none, scalars);
+}
+
+}  // namespace pf

@@ -1,0 +1,56 @@
+#pragma once
+// Observes converged steps and writes what the Output list asks for: one merged Exodus II file (rank 0
+// gathers) every Output Frequency steps, and a CSV history with reactions and probes every output step.
+// Reaction_<Set>_<C> is the force the supports apply to the body on that node set: -sum (f + b) V.
+#include <Teuchos_ParameterList.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ModelBuilder.hpp"
+#include "Solver.hpp"
+
+namespace pf {
+
+class ExodusWriter;
+class HistoryWriter;
+
+class OutputManager : public StepObserver {
+ public:
+  OutputManager(const Teuchos::ParameterList& input, const std::string& inputFile, Problem& problem);
+  ~OutputManager() override;
+  void onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
+              const std::vector<double>& f) override;
+  std::string exodusFile() const { return exodusName_; }
+  std::string historyFile() const { return historyName_; }
+
+ private:
+  struct Probe {
+    std::string name;
+    int local = -1;                       // owned-local index on the owning rank, else -1
+    std::vector<std::string> variables;
+  };
+  struct Reaction {
+    std::string set;
+    std::vector<int> nodes;  // owned-local
+  };
+  double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
+                   const std::vector<double>& f) const;
+  std::vector<double> ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
+                                 const std::vector<double>& v, const std::vector<double>& f) const;
+
+  Problem& pb_;
+  Model& model_;
+  int frequency_ = 1;
+  bool exodus_ = false;
+  std::string exodusName_, historyName_;
+  std::vector<std::string> nodalVectors_, elementScalars_;
+  std::vector<Probe> probes_;
+  std::vector<Reaction> reactions_;
+  std::unique_ptr<ExodusWriter> writer_;
+  std::unique_ptr<HistoryWriter> history_;
+  std::vector<double> bodyForce_;
+};
+
+}  // namespace pf

@@ -1,0 +1,45 @@
+#pragma once
+// A time or load-step integrator over a Model. Solvers know nothing of materials, files or output: they
+// advance (u, v) from t0 to t1 and report each completed step to an observer, which decides what to
+// write. A step is reported only after it has converged; a step that cannot converge throws
+// SolverFailure, so nothing non-converged is ever presented as a result.
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace pf {
+
+class Model;
+
+class SolverFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct StepReport {
+  int step = 0;          // 0 = initial state
+  double time = 0.0;
+  int iterations = 0;    // solver iterations of this step (0 for explicit steps)
+  double residual = 0.0; // final residual norm of the step (force units), 0 for explicit steps
+  double tolerance = 0.0;
+  double wallSeconds = 0.0;  // wall time of this step
+};
+
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  // u, v: displacement and velocity; f: internal force density; all 3 per owned node.
+  virtual void onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
+                      const std::vector<double>& f) = 0;
+};
+
+class Solver {
+ public:
+  virtual ~Solver() = default;
+  virtual std::string name() const = 0;
+  // u, v hold the initial state on entry (prescribed values are applied by the solver).
+  virtual void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+                   StepObserver& observer) = 0;
+};
+
+}  // namespace pf

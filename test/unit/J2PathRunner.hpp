@@ -1,0 +1,101 @@
+#pragma once
+// Drives one peridynamic material point (MaterialPoint) and the classical J2 reference (ClassicalJ2)
+// along the same small-strain path (F = I + eps) and collects the largest differences.
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ClassicalJ2.hpp"
+#include "MaterialPoint.hpp"
+
+namespace pftest {
+
+constexpr double kE = 200e9, kNu = 0.3, kSy = 600e6, kDx = 1e-3;
+
+enum class Path { Uniaxial, Cyclic, Shear };
+inline const char* pathName(Path p) { return p == Path::Uniaxial ? "uniaxial" : p == Path::Cyclic ? "cyclic" : "shear"; }
+
+inline const char* dimName(pf::Dimension d) {
+  return d == pf::Dimension::ThreeD ? "3D" : d == pf::Dimension::PlaneStress ? "PlaneStress" : "PlaneStrain";
+}
+
+// Controlling strain at step k of n: uniaxial/shear 0 -> amp; cyclic 0 -> +amp -> -amp -> +amp.
+inline double pathStrain(Path p, int k, int n, double amp) {
+  const double t = double(k) / n;
+  if (p != Path::Cyclic) return amp * t;
+  if (t <= 0.25) return 4 * t * amp;
+  if (t <= 0.75) return amp * (1 - 4 * (t - 0.25));
+  return amp * (-1 + 8 * (t - 0.75));
+}
+
+// Small-strain tensor of the path (uniaxial strain along x, or pure shear eps_xy = eps_yx = s/2).
+inline Sym pathTensor(Path p, double s) {
+  Sym e{};
+  if (p == Path::Shear) { e[1] = e[3] = 0.5 * s; } else { e[0] = s; }
+  return e;
+}
+
+inline std::map<std::string, double> j2Values(pf::Dimension dim, double K, double H) {
+  std::map<std::string, double> v = {{"Density", 8000.0}, {"Young's Modulus", kE}, {"Poisson's Ratio", kNu},
+                                     {"Yield Stress", kSy}, {"Isotropic Hardening Modulus", K},
+                                     {"Kinematic Hardening Modulus", H}};
+  if (dim == pf::Dimension::PlaneStress) { v["Plane Stress"] = 1.0; v["Thickness"] = kDx; }
+  if (dim == pf::Dimension::PlaneStrain) { v["Plane Strain"] = 1.0; v["Thickness"] = kDx; }
+  return v;
+}
+
+struct PathResult {
+  double vmErr = 0;      // max |vm_pd - vm_cl| / sigma_y
+  double alphaErr = 0;   // max |alpha_pd - alpha_cl| / max alpha_cl
+  double onsetErr = 0;   // |eps_y,pd / eps_y,cl - 1|
+  double stressErr = 0;  // max in-plane |sigma_pd - sigma_cl| component / sigma_y (information)
+  int maxIterations = 0;
+  int reverseYieldStepPd = -1, reverseYieldStepCl = -1;  // first plastic step after the first reversal
+  std::vector<double> strain, vm, svm, alpha, lambda, q;  // per step, peridynamic
+};
+
+inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, double H, double amp = 0.012,
+                          int steps = 120, const std::string& norm = "Discrete") {
+  auto mat = pf::makeMaterial("Elastic Plastic Hardening", j2Values(dim, K, H), {{"Yield Normalization", norm}});
+  pf::MaterialPoint mp(*mat, kDx, ratio, kDx);
+  const ClassicalJ2::Mode mode = dim == pf::Dimension::ThreeD       ? ClassicalJ2::Mode::ThreeD
+                                 : dim == pf::Dimension::PlaneStress ? ClassicalJ2::Mode::PlaneStress
+                                                                    : ClassicalJ2::Mode::PlaneStrain;
+  ClassicalJ2 cl(kE, kNu, kSy, K, H, mode);
+  PathResult r;
+  double alphaMax = 0, alphaPrevPd = 0, alphaPrevCl = 0;
+  bool reversed = false;
+  for (int k = 1; k <= steps; ++k) {
+    const double s = pathStrain(path, k, steps, amp);
+    const Sym e = pathTensor(path, s);
+    std::array<double, 9> F{1, 0, 0, 0, 1, 0, 0, 0, 1};
+    for (int a = 0; a < 9; ++a) F[a] += e[a];
+    if (dim != pf::Dimension::ThreeD) F[8] = 1.0;
+    mp.deform(F);
+    mp.evaluate();
+    cl.update(e);
+    const double vm = mp.value("Von_Mises_Stress"), al = mp.value("Equivalent_Plastic_Strain");
+    if (k == 1) r.onsetErr = std::fabs(cl.vonMises() / vm - 1.0);  // elastic first step: eps_y ~ 1/vm
+    r.vmErr = std::max(r.vmErr, std::fabs(vm - cl.vonMises()) / kSy);
+    alphaMax = std::max(alphaMax, cl.alphaT);
+    r.alphaErr = std::max(r.alphaErr, std::fabs(al - cl.alphaT));
+    const std::array<double, 9> sg = mp.stress();
+    const int comps[3] = {0, 1, 4};
+    for (int c : comps) r.stressErr = std::max(r.stressErr, std::fabs(sg[c] - cl.sigma[c]) / kSy);
+    r.maxIterations = std::max(r.maxIterations, int(mp.value("Return_Mapping_Iterations")));
+    if (path == Path::Cyclic && k > steps / 4) reversed = true;
+    if (reversed && r.reverseYieldStepPd < 0 && al > alphaPrevPd) r.reverseYieldStepPd = k;
+    if (reversed && r.reverseYieldStepCl < 0 && cl.alphaT > alphaPrevCl) r.reverseYieldStepCl = k;
+    alphaPrevPd = al; alphaPrevCl = cl.alphaT;
+    r.strain.push_back(s); r.vm.push_back(vm); r.svm.push_back(mp.value("Signed_Von_Mises_Stress"));
+    r.alpha.push_back(al); r.lambda.push_back(mp.value("Lambda")); r.q.push_back(mp.value("Back_Stress"));
+    mp.commit();
+    cl.commit();
+  }
+  r.alphaErr = alphaMax > 0 ? r.alphaErr / alphaMax : r.alphaErr;
+  return r;
+}
+
+}  // namespace pftest

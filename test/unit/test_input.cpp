@@ -1,0 +1,323 @@
+// Schema validation, readInput, expressions and boundary conditions.
+#include <cmath>
+#include <sys/stat.h>
+
+#include <gtest/gtest.h>
+
+#include "Discretization.hpp"
+#include "Expression.hpp"
+#include "Input.hpp"
+#include "InputSchema.hpp"
+#include "NodeSets.hpp"
+#include "test_input_helpers.hpp"
+
+using pftest::deckFromXml;
+
+namespace {
+
+const char* kFile = "deck.xml";
+
+std::string baseDeck() {
+  return R"(<ParameterList>
+  <Parameter name="Verbose" type="bool" value="false"/>
+  <ParameterList name="Discretization">
+    <Parameter name="Type" type="string" value="PdQuickGrid"/>
+    <ParameterList name="TensorProduct3DMeshGenerator">
+      <Parameter name="X Origin" type="double" value="0"/>
+      <Parameter name="Y Origin" type="double" value="0"/>
+      <Parameter name="Z Origin" type="double" value="0"/>
+      <Parameter name="X Length" type="double" value="3"/>
+      <Parameter name="Y Length" type="double" value="2"/>
+      <Parameter name="Z Length" type="double" value="2"/>
+      <Parameter name="Number Points X" type="int" value="3"/>
+      <Parameter name="Number Points Y" type="int" value="2"/>
+      <Parameter name="Number Points Z" type="int" value="2"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Materials">
+    <ParameterList name="Steel">
+      <Parameter name="Material Model" type="string" value="Elastic"/>
+      <Parameter name="Density" type="double" value="7800"/>
+      <Parameter name="Bulk Modulus" type="double" value="130e9"/>
+      <Parameter name="Shear Modulus" type="double" value="78e9"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Blocks">
+    <ParameterList name="My Block">
+      <Parameter name="Block Names" type="string" value="block_1"/>
+      <Parameter name="Material" type="string" value="Steel"/>
+      <Parameter name="Horizon" type="double" value="1.75"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Boundary Conditions">
+    <Parameter name="Min X Node Set" type="string" value="1 4 7 10"/>
+    <ParameterList name="Right Face">
+      <Parameter name="Type" type="string" value="Node Set Region"/>
+      <Parameter name="Face" type="string" value="Max X"/>
+    </ParameterList>
+    <ParameterList name="Fix Left">
+      <Parameter name="Type" type="string" value="Prescribed Displacement"/>
+      <Parameter name="Node Set" type="string" value="Min X Node Set"/>
+      <Parameter name="Coordinate" type="string" value="x"/>
+      <Parameter name="Value" type="string" value="0.0"/>
+    </ParameterList>
+    <ParameterList name="Pull Right">
+      <Parameter name="Type" type="string" value="Prescribed Displacement"/>
+      <Parameter name="Node Set" type="string" value="Right Face"/>
+      <Parameter name="Coordinate" type="string" value="x"/>
+      <Parameter name="Value" type="string" value="0.01*t"/>
+    </ParameterList>
+    <ParameterList name="Gravity">
+      <Parameter name="Type" type="string" value="Body Force"/>
+      <Parameter name="Node Set" type="string" value="All"/>
+      <Parameter name="Coordinate" type="string" value="z"/>
+      <Parameter name="Value" type="double" value="-9.81"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Solver">
+    <Parameter name="Initial Time" type="double" value="0.0"/>
+    <Parameter name="Final Time" type="double" value="1.0"/>
+    <ParameterList name="QuasiStatic">
+      <Parameter name="Number of Load Steps" type="int" value="2"/>
+    </ParameterList>
+  </ParameterList>
+  <ParameterList name="Output">
+    <Parameter name="Output Filename" type="string" value="out"/>
+    <Parameter name="Reactions" type="string" value="Min X Node Set, Right Face"/>
+    <ParameterList name="Output Variables">
+      <Parameter name="Displacement" type="bool" value="true"/>
+    </ParameterList>
+    <ParameterList name="Probes">
+      <ParameterList name="Centre">
+        <Parameter name="X" type="double" value="1.5"/>
+        <Parameter name="Y" type="double" value="1.0"/>
+        <Parameter name="Variables" type="string" value="Displacement, Equivalent_Plastic_Strain"/>
+      </ParameterList>
+    </ParameterList>
+  </ParameterList>
+</ParameterList>)";
+}
+
+Teuchos::RCP<Teuchos::ParameterList> base() { return deckFromXml(baseDeck()); }
+
+}  // namespace
+
+TEST(InputSchema, BaseDeckIsValid) { EXPECT_NO_THROW(pf::validateInput(*base(), kFile)); }
+
+TEST(InputSchema, UnknownParameterNamesItsPath) {
+  auto p = base();
+  p->sublist("Blocks").sublist("My Block").set("Horizn", 1.0);
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "Blocks/My Block: unknown parameter 'Horizn'");
+}
+
+TEST(InputSchema, UnknownSubListNamesItsPath) {
+  auto p = base();
+  p->sublist("Solver").sublist("QuasiStatic").sublist("Extra");
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "Solver/QuasiStatic: unknown sub-list 'Extra'");
+  auto q = base();
+  q->sublist("Damage Models");
+  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "unknown sub-list 'Damage Models'");
+}
+
+TEST(InputSchema, MissingMaterial) {
+  auto p = base();
+  p->sublist("Blocks").sublist("My Block").set("Material", std::string("Aluminium"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Material' = 'Aluminium'");
+}
+
+TEST(InputSchema, NonPositiveHorizon) {
+  auto p = base();
+  p->sublist("Blocks").sublist("My Block").set("Horizon", -1.0);
+  const std::string msg = pftest::inputErrorOf([&] { pf::validateInput(*p, "plate.xml"); });
+  EXPECT_EQ(msg, "plate.xml: Blocks/My Block: 'Horizon' must be positive (got -1)");
+}
+
+TEST(InputSchema, WrongTypeAndMissingRequired) {
+  auto p = base();
+  p->sublist("Blocks").sublist("My Block").set("Horizon", std::string("big"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Horizon' must be a double");
+  auto q = base();
+  q->sublist("Solver").remove("Final Time");
+  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "missing required parameter 'Final Time'");
+  auto r = base();
+  r->remove("Blocks");
+  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "missing required sub-list 'Blocks'");
+}
+
+TEST(InputSchema, UnknownMaterialModelAndParameter) {
+  auto p = base();
+  p->sublist("Materials").sublist("Steel").set("Material Model", std::string("Rubber"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "unknown 'Material Model' = 'Rubber'");
+  auto q = base();
+  q->sublist("Materials").sublist("Steel").set("Yield Strss", 1.0);
+  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "Materials/Steel: unknown parameter 'Yield Strss'");
+  auto r = base();
+  r->sublist("Materials").sublist("Steel").remove("Density");
+  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "missing required parameter 'Density'");
+}
+
+TEST(InputSchema, MaterialInputConvertsValues) {
+  auto p = base();
+  p->sublist("Materials").sublist("Steel").set("Plane Stress", true);
+  p->sublist("Materials").sublist("Steel").set("Density", 7800);  // int where a double is expected
+  const pf::MaterialInput in = pf::materialInputFor(p->sublist("Materials").sublist("Steel"), "Steel", kFile);
+  EXPECT_EQ(in.name, "Steel");
+  EXPECT_DOUBLE_EQ(in.get("Density"), 7800.0);
+  EXPECT_DOUBLE_EQ(in.get("Plane Stress"), 1.0);
+  EXPECT_EQ(in.strings.at("Material Model"), "Elastic");
+}
+
+TEST(InputSchema, UnknownInfluenceFunction) {
+  auto p = base();
+  p->sublist("Discretization").set("Influence Function", std::string("Cubic"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Influence Function' = 'Cubic'");
+}
+
+TEST(InputSchema, SolverChoiceIsExactlyOne) {
+  auto p = base();
+  p->sublist("Solver").sublist("Verlet").set("Fixed dt", 1e-8);
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "exactly one solver sub-list");
+  auto q = base();
+  q->sublist("Solver").remove("QuasiStatic");
+  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "exactly one solver sub-list");
+  auto r = base();
+  r->sublist("Solver").remove("QuasiStatic");
+  r->sublist("Solver").sublist("NOXQuasiStatic").sublist("Anything").set("Goes", 1);
+  EXPECT_NO_THROW(pf::validateInput(*r, kFile));
+}
+
+TEST(InputSchema, BoundaryConditionErrors) {
+  auto p = base();
+  p->sublist("Boundary Conditions").sublist("Fix Left").set("Node Set", std::string("Nowhere"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Node Set' = 'Nowhere'");
+  auto q = base();
+  q->sublist("Boundary Conditions").sublist("Fix Left").set("Coordinate", std::string("w"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "'Coordinate'");
+  auto r = base();
+  r->sublist("Boundary Conditions").sublist("Fix Left").set("Value", std::string("2*q"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "Boundary Conditions/Fix Left/Value");
+  auto s = base();
+  s->sublist("Boundary Conditions").sublist("Fix Left").set("Type", std::string("Prescribed Temperature"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*s, kFile), kFile, "'Type' = 'Prescribed Temperature'");
+}
+
+TEST(InputSchema, OutputErrors) {
+  auto p = base();
+  p->sublist("Output").sublist("Output Variables").set("Stress", true);
+  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "Output/Output Variables: unknown parameter 'Stress'");
+  auto q = base();
+  q->sublist("Output").sublist("Probes").sublist("Centre").set("Variables", std::string("Temperature"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "'Temperature'");
+  auto r = base();
+  r->sublist("Output").set("Reactions", std::string("Min X Node Set, Nowhere"));
+  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "'Reactions' names undefined node set 'Nowhere'");
+}
+
+TEST(Input, ReadsXmlAndYamlAndNamesBadFiles) {
+  const std::string xml = pftest::writeTemp("pf_deck.xml", baseDeck());
+  auto p = pf::readInput(xml);
+  EXPECT_NO_THROW(pf::validateInput(*p, xml));
+  EXPECT_EQ(pf::inputDirectory("/a/b/deck.xml"), "/a/b");
+  EXPECT_EQ(pf::inputDirectory("deck.xml"), ".");
+
+  const std::string yaml = pftest::writeTemp("pf_deck.yaml", R"(%YAML 1.1
+---
+ANONYMOUS:
+  Solver:
+    Final Time: 2.5
+    Verlet:
+      Safety Factor: 0.8
+  Boundary Conditions:
+    Ends: "1 2"
+    Pull:
+      Type: Prescribed Displacement
+      Node Set: Ends
+      Coordinate: x
+      Value: 0.0
+...
+)");
+  auto y = pf::readInput(yaml);
+  EXPECT_DOUBLE_EQ(pf::getNumber(y->sublist("Solver"), "Final Time"), 2.5);
+  EXPECT_EQ(pf::getText(y->sublist("Boundary Conditions"), "Ends", ""), "1 2");
+  EXPECT_EQ(pf::scalarAsText(y->sublist("Boundary Conditions").sublist("Pull").getEntry("Value")), "0");
+
+  EXPECT_INPUT_ERROR(pf::readInput("/nonexistent/deck.xml"), "/nonexistent/deck.xml", "cannot open");
+  const std::string bad = pftest::writeTemp("pf_bad.xml", "<ParameterList><Parameter name=\"a\"</ParameterList>");
+  EXPECT_INPUT_ERROR(pf::readInput(bad), bad, "cannot parse XML");
+}
+
+TEST(Expression, PeridigmStyleAndBodies) {
+  pf::Expression ramp("-0.1*t/0.00005", "ctx");
+  EXPECT_NEAR(ramp(0, 0, 0, 0.00005), -0.1, 1e-15);
+  EXPECT_FALSE(ramp.dependsOnSpace());
+  pf::Expression body("value = -0.1*t/0.00005;", "ctx");
+  EXPECT_NEAR(body(0, 0, 0, 0.000025), -0.05, 1e-15);
+  pf::Expression space("0.001*x + 2*y - z*1e-3", "ctx");
+  EXPECT_TRUE(space.dependsOnSpace());
+  EXPECT_NEAR(space(1, 2, 3, 0), 0.001 + 4 - 0.003, 1e-14);
+  pf::Expression exponent("1e-3*t", "ctx");  // the 'e' of 1e-3 is not a variable
+  EXPECT_FALSE(exponent.dependsOnSpace());
+  pf::Expression zero("0.0", "ctx");
+  EXPECT_EQ(zero(5, 5, 5, 5), 0.0);
+  EXPECT_INPUT_ERROR(pf::Expression("1 +", "in.xml: Boundary Conditions/B/Value"), "in.xml",
+                     "Boundary Conditions/B/Value");
+  EXPECT_INPUT_ERROR(pf::Expression("  ", "in.xml: Boundary Conditions/B/Value"), "in.xml", "empty");
+}
+
+// The cyclic history of the paper: 0 -> +0.25 (t 20) -> -0.25 (t 60) -> +0.25 (t 100) -> 0 (t 120),
+// written exactly as docs/input.md shows it.
+TEST(Expression, CyclicPiecewiseLinearHistory) {
+  const std::string text =
+      "if (t <= 20) { value = 0.25*t/20; }\n"
+      "else if (t <= 60) { value = 0.25 - 0.5*(t - 20)/40; }\n"
+      "else if (t <= 100) { value = -0.25 + 0.5*(t - 60)/40; }\n"
+      "else { value = 0.25 - 0.25*(t - 100)/20; }";
+  pf::Expression h(text, "ctx");
+  EXPECT_FALSE(h.dependsOnSpace());
+  const double knots[][2] = {{0, 0},  {10, 0.125}, {20, 0.25}, {40, 0},      {60, -0.25},
+                             {80, 0}, {100, 0.25}, {110, 0.125}, {120, 0.0}};
+  for (const auto& k : knots) EXPECT_NEAR(h(0, 0, 0, k[0]), k[1], 1e-14) << "t = " << k[0];
+}
+
+TEST(BoundaryConditions, ParsedWithNodeSets) {
+  auto p = base();
+  const pf::PointCloud c = pf::buildDiscretization(p->sublist("Discretization"), kFile, ".");
+  const auto sets = pf::resolveNodeSets(p->sublist("Boundary Conditions"), c, kFile, ".");
+  EXPECT_EQ(sets.at("Min X Node Set"), (std::vector<int>{0, 3, 6, 9}));
+  EXPECT_EQ(sets.at("Right Face"), (std::vector<int>{2, 5, 8, 11}));
+  EXPECT_EQ(sets.at("All").size(), 12u);
+  const auto bcs = pf::parseBoundaryConditions(p->sublist("Boundary Conditions"), sets, kFile);
+  ASSERT_EQ(bcs.size(), 3u);
+  EXPECT_EQ(bcs[0].name, "Fix Left");
+  EXPECT_EQ(bcs[0].kind, pf::BoundaryCondition::Kind::PrescribedDisplacement);
+  EXPECT_EQ(bcs[0].coordinate, 0);
+  EXPECT_EQ(bcs[1].nodeSet, "Right Face");
+  EXPECT_NEAR((*bcs[1].value)(0, 0, 0, 2.0), 0.02, 1e-15);
+  EXPECT_EQ(bcs[2].kind, pf::BoundaryCondition::Kind::BodyForce);
+  EXPECT_EQ(bcs[2].coordinate, 2);
+  EXPECT_NEAR((*bcs[2].value)(0, 0, 0, 0), -9.81, 1e-15);
+}
+
+namespace {
+const std::string kPeridigm = "/work/shared/reference/peridigm/";
+bool exists(const std::string& path) {
+  struct stat st;
+  return stat(path.c_str(), &st) == 0;
+}
+}  // namespace
+
+TEST(PeridigmDecks, ValidateAndBuildUnmodified) {
+  for (const char* name : {"Compression_QS_3x2x2", "Compression_QS_3x2x2_TextFile"}) {
+    const std::string deck = kPeridigm + name + "/" + name + ".xml";
+    if (!exists(deck)) GTEST_SKIP() << deck << " not present";
+    auto p = pf::readInput(deck);
+    ASSERT_NO_THROW(pf::validateInput(*p, deck)) << deck;
+    const std::string dir = pf::inputDirectory(deck);
+    const pf::PointCloud c = pf::buildDiscretization(p->sublist("Discretization"), deck, dir, pf::maxBlockHorizon(*p));
+    EXPECT_EQ(c.size(), 12);
+    const auto sets = pf::resolveNodeSets(p->sublist("Boundary Conditions"), c, deck, dir);
+    const auto bcs = pf::parseBoundaryConditions(p->sublist("Boundary Conditions"), sets, deck);
+    EXPECT_EQ(bcs.size(), 4u);
+    EXPECT_NEAR((*bcs[1].value)(0, 0, 0, 0.00005), -0.1, 1e-15);
+  }
+}
