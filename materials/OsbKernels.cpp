@@ -1,5 +1,6 @@
 #include "OsbKernels.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace pf {
@@ -53,10 +54,20 @@ void osbStiffnessBound(const FamilyView& fam, const OsbConstants& c, double* bou
       S += fam.influence[b] * fam.refLength[b] * fam.volume[fam.neighbors[b]];
     double sum = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-      const double w = fam.influence[b], x = fam.refLength[b], Vj = fam.volume[fam.neighbors[b]];
-      sum += Vj * w * (c.B / m + 2.0 * coupling * x * S / (m * m));
+      const int j = fam.neighbors[b];
+      const double w = fam.influence[b], x = fam.refLength[b], Vj = fam.volume[j];
+      // A bond along n couples component a to all three: sum_b |n_a n_b| = |n_a| |n|_1 <= max_a of it.
+      double n[3], n1 = 0.0, nmax = 0.0;
+      for (int d = 0; d < 3; ++d) {
+        n[d] = std::fabs(fam.x[3 * j + d] - fam.x[3 * i + d]) / x;
+        n1 += n[d];
+        nmax = std::max(nmax, n[d]);
+      }
+      // t_ij (through m_i) and t_ji (through m_j) both load node i; the dilatation coupling of t_ji runs
+      // over j's family, bounded here by i's sum S with the smaller of the two weighted volumes.
+      const double mj = fam.weightedVolume[j], mmin = std::min(m, mj);
+      sum += Vj * w * nmax * n1 * (c.B / m + c.B / mj + 2.0 * coupling * x * S / (m * mmin));
     }
-    // both ends of each bond (t_ij and t_ji) load node i
     bound[i] = 2.0 * sum;
   }
 }

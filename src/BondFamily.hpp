@@ -27,7 +27,7 @@ struct FamilyView {
   const double* influence = nullptr;
   const double* x = nullptr;        // reference coordinates, 3 per overlap node
   const double* volume = nullptr;   // overlap nodes
-  const double* weightedVolume = nullptr;  // owned nodes: m = sum omega |xi|^2 V'
+  const double* weightedVolume = nullptr;  // m = sum omega |xi|^2 V' per overlap node (ghosts too)
   double horizon = 0.0;
 };
 

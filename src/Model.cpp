@@ -15,9 +15,17 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
   density_.assign(n, 0.0);
   bound_.assign(n, 0.0);
   std::vector<StateSpec> specs;
+  // m on the overlap: kernels need a neighbour's m for the force it sends back (t_ji) and its bound.
+  m_.assign(layout_->numOverlap(), 0.0);
+  for (const BlockModel& b : blocks_)
+    computeWeightedVolume(makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon),
+                          m_.data());
+  {
+    std::vector<double> owned(m_.begin(), m_.begin() + n);
+    layout_->importToOverlap(owned.data(), m_.data(), 1);
+  }
   for (const BlockModel& b : blocks_) {
     FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
-    computeWeightedVolume(view, m_.data());
     b.material->stiffnessBound(view, bound_.data());
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
     for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);

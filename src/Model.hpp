@@ -50,7 +50,7 @@ class Model {
   const std::vector<double>& stiffnessBound() const { return bound_; }    // per owned node
   const std::vector<double>& volume() const { return volume_; }            // per overlap node
   const std::vector<double>& coordinates() const { return x_; }            // per overlap node
-  const std::vector<double>& weightedVolume() const { return m_; }         // per owned node
+  const std::vector<double>& weightedVolume() const { return m_; }         // per overlap node
   const std::vector<BlockModel>& blocks() const { return blocks_; }
   StateStore& state() { return state_; }
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }

@@ -34,7 +34,8 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
     for (int d = 0; d < 3; ++d) { dims[d] = std::max(1L, static_cast<long>(dims[d] / f)); total *= dims[d]; }
   }
   double cell[3];
-  for (int d = 0; d < 3; ++d) cell[d] = std::max((hi[d] - lo[d]) / dims[d], 1e-300);
+  // A flat direction (2D clouds) gets one cell as wide as the horizon, so cell ranges stay finite.
+  for (int d = 0; d < 3; ++d) cell[d] = std::max((hi[d] - lo[d]) / dims[d], hmax);
   auto cellOf = [&](const double* p, int d) {
     long c = static_cast<long>((p[d] - lo[d]) / cell[d]);
     return std::min(std::max(c, 0L), dims[d] - 1);
@@ -61,8 +62,9 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
     const double h2 = h * h * (1.0 + 1e-10);
     long cmin[3], cmax[3];
     for (int d = 0; d < 3; ++d) {
-      cmin[d] = std::max(0L, static_cast<long>(std::floor((xi[d] - h - lo[d]) / cell[d])));
-      cmax[d] = std::min(dims[d] - 1, static_cast<long>(std::floor((xi[d] + h - lo[d]) / cell[d])));
+      const double a = std::floor((xi[d] - h - lo[d]) / cell[d]), b = std::floor((xi[d] + h - lo[d]) / cell[d]);
+      cmin[d] = static_cast<long>(std::max(0.0, a));
+      cmax[d] = static_cast<long>(std::min(static_cast<double>(dims[d] - 1), b));
     }
     row.clear();
     for (long cz = cmin[2]; cz <= cmax[2]; ++cz)
