@@ -34,18 +34,17 @@ MaterialPoint::MaterialPoint(const Material& mat, double dx, double ratio, doubl
         if (std::sqrt(double(i * i + j * j + k * k)) * dx > horizon * (1.0 + 1e-6) + 0.5 * dx) continue;
         x_.push_back(i * dx); x_.push_back(j * dx); x_.push_back(k * dx);
       }
-  if (planar) {
-    // buildFamilies divides by the z-extent of the cloud (UB cast when every z is 0): a spectator point
-    // out of reach of the centre keeps the extent non-zero. It has no bond and no effect.
-    x_.push_back(0.0); x_.push_back(0.0); x_.push_back(2.0 * horizon + dx);
-  }
   const int numPoints = static_cast<int>(x_.size() / 3);
   volume_.assign(numPoints, planar ? dx * dx * thickness : dx * dx * dx);
   buildFamilies(x_, 1, {horizon}, family_);
   family_.influence.assign(family_.numBonds(), 1.0);  // omega = 1, as in the paper
-  m_.assign(1, 0.0);
+  m_.assign(numPoints, 0.0);
   view_ = makeView(family_, 0, 1, x_.data(), volume_.data(), m_.data(), horizon);
   computeWeightedVolume(view_, m_.data());
+  // Only the centre's family is built; on the (infinite) lattice every point has the centre's m, which
+  // is what a model reading a neighbour's m (e.g. a stiffness bound) should see.
+  const double m0 = m_[0];
+  m_.assign(numPoints, m0);
   state_.allocate(mat.stateSpecs(), 1, family_.numBonds());
   y_ = x_;
   force_.assign(x_.size(), 0.0);

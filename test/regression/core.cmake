@@ -1,0 +1,61 @@
+# Regression tests of the core pipeline (issue 2). Each run gets its own working directory because
+# decks name their output relative to it. Python checks run with Debian's python3 (numpy, netCDF4).
+set(PY /usr/bin/python3)
+set(REG ${CMAKE_CURRENT_SOURCE_DIR}/regression)
+
+# periforge_run(NAME DECK NP): runs DECK at NP ranks in build/test/regression/NAME as a fixture.
+function(periforge_run name deck np)
+  set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
+  file(MAKE_DIRECTORY ${wd})
+  add_test(NAME ${name} COMMAND ${MPIRUN} -np ${np} ${PERIFORGE_EXE} ${deck} WORKING_DIRECTORY ${wd})
+  set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name} LABELS "regression" PROCESSORS ${np})
+endfunction()
+
+function(periforge_check name fixtures)
+  add_test(NAME ${name} COMMAND ${ARGN})
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED "${fixtures}" LABELS "regression")
+endfunction()
+
+# Patch test: affine field reproduced in the interior, np = 1 and 2.
+foreach(np 1 2)
+  periforge_run(patch_3d_np${np} ${REG}/patch/patch_3d.xml ${np})
+  periforge_check(patch_3d_np${np}_check patch_3d_np${np}
+    ${PY} ${REG}/patch/check_patch.py ${CMAKE_CURRENT_BINARY_DIR}/regression/patch_3d_np${np}/patch_3d.e)
+endforeach()
+
+# Bars in uniaxial tension (3D, plane stress, plane strain), np = 1 and 2, and np agreement.
+set(bar_3d_args --dim 3 --area 4e-4 --ratio 3.015 --reaction-against classical --tol 0.01)
+# 2D: the reaction is checked against the lattice-consistent modulus: the square lattice's fourth moment
+# at delta = 3.015 dx is anisotropic (modulus along an axis 2.3-2.5 % above E'), and the OSB free-edge
+# effect adds ~7 % more on a 20-point-wide strip (uncorrected, see docs/verification.md). The bound
+# stays 8 %: a sign or factor error in the 2D constants moves it by tens of percent.
+set(bar_plane_stress_args --dim 2 --plane stress --area 2e-5 --ratio 3.015 --reaction-against lattice --tol 0.08)
+set(bar_plane_strain_args --dim 2 --plane strain --area 2e-5 --ratio 3.015 --reaction-against lattice --tol 0.08)
+foreach(case bar_3d bar_plane_stress bar_plane_strain)
+  foreach(np 1 2)
+    periforge_run(${case}_np${np} ${REG}/bar/${case}.xml ${np})
+    periforge_check(${case}_np${np}_check ${case}_np${np}
+      ${PY} ${REG}/bar/check_bar.py ${CMAKE_CURRENT_BINARY_DIR}/regression/${case}_np${np}/${case}.csv
+      ${${case}_args} --E 200e9 --nu 0.3 --strain 1e-3)
+  endforeach()
+  periforge_check(${case}_np1_vs_np2 "${case}_np1;${case}_np2"
+    ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/${case}_np2/${case}.e
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/${case}_np1/${case}.e ${REG}/bar/np_agreement.comp)
+endforeach()
+
+# Explicit dynamics: np = 1 and np = 2 agree to round-off with a fixed dt.
+foreach(np 1 2)
+  periforge_run(bar_verlet_np${np} ${REG}/bar/bar_verlet.xml ${np})
+endforeach()
+periforge_check(bar_verlet_np1_vs_np2 "bar_verlet_np1;bar_verlet_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_verlet_np2/bar_verlet.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_verlet_np1/bar_verlet.e ${REG}/bar/verlet_agreement.comp)
+
+# User-facing errors.
+add_test(NAME input_errors COMMAND ${PY} ${REG}/errors/run_error_cases.py ${PERIFORGE_EXE} ${REG}/bar/bar_3d.xml)
+set_tests_properties(input_errors PROPERTIES LABELS "regression")
+
+# Tool self-tests.
+add_test(NAME exodiff_self_test COMMAND ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py --self-test)
+add_test(NAME compare_csv_self_test COMMAND ${PY} ${PROJECT_SOURCE_DIR}/scripts/compare_csv --self-test)
+set_tests_properties(exodiff_self_test compare_csv_self_test PROPERTIES LABELS "tools")

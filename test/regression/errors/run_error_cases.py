@@ -1,0 +1,96 @@
+#!/usr/bin/env python3
+"""User-facing error tests: each bad deck must make `periforge` exit non-zero with one line on stderr
+that names the input file and the offending parameter, without a crash (no signal, no abort) and
+without writing an Exodus or CSV file that could pass for a result.
+
+usage: run_error_cases.py PERIFORGE_EXE BASE_DECK
+BASE_DECK is a valid 3D deck (test/regression/bar/bar_3d.xml); every case edits a copy of it.
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+CASES = [
+    # name, (pattern, replacement) edits, words the message must contain
+    ("unknown parameter",
+     [('<Parameter name="Density"', '<Parameter name="Densty" type="double" value="1"/>\n      <Parameter name="Density"')],
+     ["Densty"]),
+    ("unknown sub-list",
+     [('<ParameterList name="Solver">', '<ParameterList name="Solvr"></ParameterList>\n  <ParameterList name="Solver">')],
+     ["Solvr"]),
+    ("missing material",
+     [('<Parameter name="Material" type="string" value="Steel"/>', '<Parameter name="Material" type="string" value="Stel"/>')],
+     ["Stel"]),
+    ("negative horizon",
+     [('<Parameter name="Horizon" type="double" value="0.00603"/>', '<Parameter name="Horizon" type="double" value="-0.006"/>')],
+     ["Horizon"]),
+    ("empty node set",
+     [('<ParameterList name="Left X">', '<ParameterList name="Nowhere">\n      <Parameter name="Type" type="string" value="Node Set Region"/>\n'
+       '      <Parameter name="X Min" type="double" value="5.0"/>\n    </ParameterList>\n'
+       '    <ParameterList name="On Nowhere"><Parameter name="Type" type="string" value="Prescribed Displacement"/>\n'
+       '      <Parameter name="Node Set" type="string" value="Nowhere"/><Parameter name="Coordinate" type="string" value="x"/>\n'
+       '      <Parameter name="Value" type="string" value="0.0"/></ParameterList>\n    <ParameterList name="Left X">')],
+     ["Nowhere"]),
+    ("node set with missing ids",
+     [('<ParameterList name="Boundary Conditions">', '<ParameterList name="Boundary Conditions">\n    <Parameter name="Far Set" type="string" value="1 2 999999"/>\n'
+       '    <ParameterList name="On Far"><Parameter name="Type" type="string" value="Prescribed Displacement"/>\n'
+       '      <Parameter name="Node Set" type="string" value="Far Set"/><Parameter name="Coordinate" type="string" value="y"/>\n'
+       '      <Parameter name="Value" type="string" value="0.0"/></ParameterList>')],
+     ["Far Set", "999999"]),
+    ("unreadable mesh",
+     [(r'<Parameter name="Type" type="string" value="Box With Holes"/>.*?<Parameter name="Fictitious Layers" type="string" value="Left Right"/>',
+       '<Parameter name="Type" type="string" value="Text File"/>\n    <Parameter name="Input Mesh File" type="string" value="no_such_mesh.txt"/>'),
+      # the layers' node sets belong to the generator this case replaces
+      (r'  <ParameterList name="Boundary Conditions">.*?\n  </ParameterList>\n', '')],
+     ["no_such_mesh.txt"]),
+    ("2D material on a 3D grid",
+     [('<Parameter name="Poisson\'s Ratio" type="double" value="0.3"/>', '<Parameter name="Poisson\'s Ratio" type="double" value="0.3"/>\n'
+       '      <Parameter name="Plane Stress" type="bool" value="true"/>\n      <Parameter name="Thickness" type="double" value="0.001"/>')],
+     ["Steel", "2D"]),
+    ("unknown material model",
+     [('<Parameter name="Material Model" type="string" value="Elastic"/>', '<Parameter name="Material Model" type="string" value="Elastc"/>')],
+     ["Elastc"]),
+]
+
+
+def main(exe, base):
+    text = open(base).read()
+    failures = 0
+    for name, edits, words in CASES:
+        deck = text
+        for pat, rep in edits:
+            new = re.sub(pat, lambda _m: rep, deck, count=1, flags=re.S)
+            if new == deck:
+                print(f"[{name}] test set-up error: pattern not found in base deck: {pat[:60]}")
+                failures += 1
+            deck = new
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "bad.xml")
+            open(path, "w").write(deck)
+            p = subprocess.run([exe, path], cwd=d, capture_output=True, text=True, timeout=300)
+            lines = [l for l in p.stderr.splitlines() if l.strip()]
+            msg = lines[-1] if lines else ""
+            outputs = [f for f in os.listdir(d) if f.endswith((".e", ".csv"))]
+            problems = []
+            if p.returncode <= 0:
+                problems.append(f"exit code {p.returncode} (want > 0, not a signal)")
+            if len(lines) != 1:
+                problems.append(f"{len(lines)} stderr lines (want 1)")
+            if "bad.xml" not in msg:
+                problems.append("message does not name the input file")
+            for w in words:
+                if w not in msg:
+                    problems.append(f"message does not contain '{w}'")
+            if outputs:
+                problems.append(f"wrote output files {outputs}")
+            status = "ok" if not problems else "FAIL: " + "; ".join(problems)
+            print(f"[{name}] {status}\n    {msg}")
+            failures += bool(problems)
+    print(f"{len(CASES) - failures} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1], sys.argv[2]))
