@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "ExodusWriter.hpp"
 #include "HistoryWriter.hpp"
@@ -80,7 +81,15 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
       }
     }
     std::vector<std::string> sets = pb_.prescribedNodeSets;
-    if (out.isParameter("Reactions")) sets = splitWords(getText(out, "Reactions", ""));
+    if (out.isParameter("Reactions")) {  // comma-separated: node-set names may contain spaces
+      sets.clear();
+      std::string item;
+      for (std::istringstream in(getText(out, "Reactions", "")); std::getline(in, item, ',');) {
+        item.erase(0, item.find_first_not_of(" \t\n"));
+        item.erase(item.find_last_not_of(" \t\n") + 1);
+        if (!item.empty()) sets.push_back(item);
+      }
+    }
     for (const std::string& s : sets) {
       auto it = pb_.nodeSets.find(s);
       if (it == pb_.nodeSets.end()) throw InputError(inputFile + ": Output: 'Reactions' names unknown node set '" + s + "'");
