@@ -48,7 +48,7 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
   std::vector<double> lambda(n);
   for (int k = 0; k < n; ++k) lambda[k] = 0.25 * opt_.safetyFactor * model.stiffnessBound()[k / 3];
 
-  std::vector<double> f(n), b(n), r(n), rOld(n), uStepStart(n), duPrev(n, 0.0), uFixedPrev(n), uFixedNow(n);
+  std::vector<double> f(n), b(n), r(n), rOld(n), uStepStart(n), duPrev(n, 0.0);
   model.applyPrescribed(t0, u.data());
   model.internalForce(u.data(), f.data());
   model.bodyForce(t0, b.data());
@@ -61,12 +61,11 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
     uStepStart = u;
     // Predictor: scale the previous step's free increment by how the prescribed increment continues
     // (exact for a linear problem under proportional loading, harmless after a reversal).
-    for (int k = 0; k < n; ++k) uFixedPrev[k] = u[k];
     model.applyPrescribed(t, u.data());
     double dot = 0, nn = 0;
     for (int k = 0; k < n; ++k)
       if (fixed[k]) {
-        dot += (u[k] - uFixedPrev[k]) * duPrev[k];
+        dot += (u[k] - uStepStart[k]) * duPrev[k];
         nn += duPrev[k] * duPrev[k];
       }
     double in[2] = {dot, nn}, out[2];

@@ -11,7 +11,6 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     : layout_(std::move(layout)), x_(std::move(overlapCoords)), volume_(std::move(overlapVolume)),
       blocks_(std::move(blocks)) {
   const int n = numOwned();
-  m_.assign(n, 0.0);
   density_.assign(n, 0.0);
   bound_.assign(n, 0.0);
   std::vector<StateSpec> specs;
