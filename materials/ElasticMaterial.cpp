@@ -29,3 +29,7 @@ void ElasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const
 }
 
 }  // namespace pf
+
+namespace pf {
+void ElasticMaterial::pairStiffness(const FamilyView& fam, double* c) const { osbPairStiffness(fam, osb_, c); }
+}  // namespace pf

@@ -15,6 +15,7 @@ class ElasticMaterial : public Material {
   std::vector<StateSpec> stateSpecs() const override;
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
+  void pairStiffness(const FamilyView& fam, double* c) const override;
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 

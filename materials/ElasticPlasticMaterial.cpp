@@ -92,3 +92,7 @@ void ElasticPlasticMaterial::stiffnessBound(const FamilyView& fam, double* bound
 }
 
 }  // namespace pf
+
+namespace pf {
+void ElasticPlasticMaterial::pairStiffness(const FamilyView& fam, double* c) const { osbPairStiffness(fam, params_.osb, c); }
+}  // namespace pf

@@ -19,6 +19,7 @@ class ElasticPlasticMaterial : public Material {
   std::vector<StateSpec> stateSpecs() const override;
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
+  void pairStiffness(const FamilyView& fam, double* c) const override;
   double density() const override { return density_; }
   Dimension dimension() const override { return params_.dim; }
 

@@ -35,6 +35,11 @@ class Material {
   // length): the diagonal fictitious density of adaptive dynamic relaxation and the stable time step.
   virtual void stiffnessBound(const FamilyView& fam, double* bound) const = 0;
 
+  // Per bond b of owned nodes [fam.begin, fam.end): c_b such that c_b V_j n n^T approximates the part of
+  // dF_i/du_j carried by the bond's own extension (no dilatation coupling): the sparse preconditioner of
+  // the implicit solver. Elastic moduli are enough; the Krylov solve applies the exact operator.
+  virtual void pairStiffness(const FamilyView& fam, double* c) const = 0;
+
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;
 };

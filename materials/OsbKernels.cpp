@@ -45,6 +45,13 @@ void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double*
   }
 }
 
+void osbPairStiffness(const FamilyView& fam, const OsbConstants& c, double* stiffness) {
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const double scale = c.B / fam.weightedVolume[i];
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) stiffness[b] = scale * fam.influence[b];
+  }
+}
+
 void osbStiffnessBound(const FamilyView& fam, const OsbConstants& c, double* bound) {
   const double coupling = std::fabs(c.A - c.B * c.c) * c.k * c.D;
   for (int i = fam.begin; i < fam.end; ++i) {

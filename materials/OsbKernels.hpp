@@ -20,4 +20,7 @@ void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double*
 // terms of t (direct extension and dilatation coupling), both ends of each bond counted.
 void osbStiffnessBound(const FamilyView& fam, const OsbConstants& c, double* bound);
 
+// c_b = B omega_b / m_i: stiffness of the deviatoric/extension term of t per unit extension.
+void osbPairStiffness(const FamilyView& fam, const OsbConstants& c, double* stiffness);
+
 }  // namespace pf

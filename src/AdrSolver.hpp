@@ -24,6 +24,15 @@ class AdrSolver : public Solver {
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
            StepObserver& observer) override;
 
+  // Relaxes u (prescribed values at t already set, free ones predicted) to equilibrium at time t.
+  // uStepStart: the converged state the step started from (the damping estimate works on u - uStepStart).
+  // Writes trial state only; throws SolverFailure after Maximum Iterations (state rolled back).
+  struct StepResult {
+    int iterations;
+    double residual, tolerance;
+  };
+  StepResult relax(Model& model, std::vector<double>& u, double t, const std::vector<double>& uStepStart) const;
+
  private:
   AdrOptions opt_;
 };

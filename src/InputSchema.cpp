@@ -362,13 +362,52 @@ void checkVariables(const std::vector<std::string>& names, const std::string& fi
       fail(file, path, "'" + param + "' names unknown output variable '" + n + "'");
 }
 
-void validateOutput(const PL& o, const std::string& file, const std::set<std::string>& nodeSets) {
+// Splits a comma-separated list, trimming blanks; an empty entry is reported (names may contain spaces).
+std::vector<std::string> commaList(const PL& o, const std::string& param, const std::string& file,
+                                   const std::string& path) {
+  std::stringstream ss(getText(o, param, ""));
+  std::string item;
+  std::vector<std::string> out;
+  while (std::getline(ss, item, ',')) {
+    const std::size_t a = item.find_first_not_of(" \t\n"), b = item.find_last_not_of(" \t\n");
+    if (a == std::string::npos) fail(file, path, "'" + param + "' has an empty entry");
+    out.push_back(item.substr(a, b - a + 1));
+  }
+  if (out.empty()) fail(file, path, "'" + param + "' is empty");
+  return out;
+}
+
+// bcs: the deck's Boundary Conditions list, or null if it has none.
+void validateOutput(const PL& o, const std::string& file, const std::set<std::string>& nodeSets, const PL* bcs) {
   const std::string path = "Output";
   checkList(o, file, path,
             {{"Output File Type", T::String, false}, {"Output Format", T::String, false},
              {"Output Filename", T::String, true}, {"Output Frequency", T::Int, false},
-             {"Parallel Write", T::Bool, false}, {"Reactions", T::String, false}},
+             {"Parallel Write", T::Bool, false}, {"Reactions", T::String, false},
+             {"Reaction Names", T::String, false}, {"Applied Displacement", T::String, false}},
             {"Output Variables", "Probes"});
+  if (o.isParameter("Reaction Names")) {
+    if (!o.isParameter("Reactions")) fail(file, path, "'Reaction Names' needs 'Reactions' (one name per entry)");
+    const std::vector<std::string> sets = commaList(o, "Reactions", file, path);
+    const std::vector<std::string> names = commaList(o, "Reaction Names", file, path);
+    if (names.size() != sets.size())
+      fail(file, path, "'Reaction Names' has " + std::to_string(names.size()) + " entries, 'Reactions' has " +
+                           std::to_string(sets.size()));
+    std::set<std::string> seen;
+    for (const std::string& n : names)
+      if (!seen.insert(n).second) fail(file, path, "'Reaction Names' repeats '" + n + "'");
+  }
+  if (o.isParameter("Applied Displacement")) {
+    const std::string bc = getText(o, "Applied Displacement", "");
+    if (!bcs || !bcs->isSublist(bc))
+      fail(file, path, "'Applied Displacement' = '" + bc + "' is not a condition of Boundary Conditions");
+    const PL& b = bcs->sublist(bc);
+    if (getText(b, "Type", "") != "Prescribed Displacement")
+      fail(file, path, "'Applied Displacement' = '" + bc + "' is not a Prescribed Displacement");
+    Expression e(scalarAsText(b.getEntry("Value")), file + ": Boundary Conditions/" + bc + "/Value");
+    if (e.dependsOnSpace())
+      fail(file, path, "'Applied Displacement' = '" + bc + "': its Value depends on x, y or z (one value per time is needed)");
+  }
   oneOf(o, "Output File Type", {"ExodusII"}, file, path);
   oneOf(o, "Output Format", {"BINARY"}, file, path);
   atLeastOne(o, "Output Frequency", file, path);
@@ -543,7 +582,9 @@ void validateInput(const PL& p, const std::string& inputFile) {
   if (p.isSublist("Boundary Conditions"))
     nodeSets = validateBoundaryConditions(p.sublist("Boundary Conditions"), inputFile, generated);
   validateSolver(requireSublist(p, "Solver", inputFile, "top level"), inputFile);
-  if (p.isSublist("Output")) validateOutput(p.sublist("Output"), inputFile, nodeSets);
+  if (p.isSublist("Output"))
+    validateOutput(p.sublist("Output"), inputFile, nodeSets,
+                   p.isSublist("Boundary Conditions") ? &p.sublist("Boundary Conditions") : nullptr);
   // Layers default to the horizon, so a deck with layers needs a positive width from somewhere.
   const PL& d = p.sublist("Discretization");
   if (!generated.empty() && !d.isParameter("Layer Width") && !(maxBlockHorizon(p) > 0.0))

@@ -48,6 +48,14 @@ void Model::internalForce(const double* u, double* f) {
   layout_->exportAdd(fOverlap_.data(), f, 3);
 }
 
+std::vector<double> Model::pairStiffness() const {
+  std::vector<double> c(layout_->family().numBonds(), 0.0);
+  for (const BlockModel& b : blocks_)
+    b.material->pairStiffness(
+        makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon), c.data());
+  return c;
+}
+
 void Model::addPrescribedDisplacement(NodalLoad load) {
   for (int i : load.nodes) prescribed_[3 * i + load.coordinate] = 1;
   prescribedLoads_.push_back(std::move(load));

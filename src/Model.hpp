@@ -52,6 +52,8 @@ class Model {
   const std::vector<double>& coordinates() const { return x_; }            // per overlap node
   const std::vector<double>& weightedVolume() const { return m_; }         // per overlap node
   const std::vector<BlockModel>& blocks() const { return blocks_; }
+  // Per bond of the owned nodes: the materials' pair stiffness c_b (see Material::pairStiffness).
+  std::vector<double> pairStiffness() const;
   StateStore& state() { return state_; }
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 

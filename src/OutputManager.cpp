@@ -80,20 +80,27 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
                               pb_.cloud.x[3 * best + 1], pb_.cloud.x[3 * best + 2]);
       }
     }
-    std::vector<std::string> sets = pb_.prescribedNodeSets;
-    if (out.isParameter("Reactions")) {  // comma-separated: node-set names may contain spaces
-      sets.clear();
+    auto commaList = [&](const std::string& param) {  // comma-separated: node-set names may contain spaces
+      std::vector<std::string> items;
       std::string item;
-      for (std::istringstream in(getText(out, "Reactions", "")); std::getline(in, item, ',');) {
+      for (std::istringstream in(getText(out, param, "")); std::getline(in, item, ',');) {
         item.erase(0, item.find_first_not_of(" \t\n"));
         item.erase(item.find_last_not_of(" \t\n") + 1);
-        if (!item.empty()) sets.push_back(item);
+        if (!item.empty()) items.push_back(item);
       }
-    }
-    for (const std::string& s : sets) {
+      return items;
+    };
+    std::vector<std::string> sets = pb_.prescribedNodeSets;
+    if (out.isParameter("Reactions")) sets = commaList("Reactions");
+    std::vector<std::string> labels = sets;
+    if (out.isParameter("Reaction Names")) labels = commaList("Reaction Names");
+    if (labels.size() != sets.size())
+      throw InputError(inputFile + ": Output: 'Reaction Names' needs one name per entry of 'Reactions'");
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      const std::string& s = sets[k];
       auto it = pb_.nodeSets.find(s);
       if (it == pb_.nodeSets.end()) throw InputError(inputFile + ": Output: 'Reactions' names unknown node set '" + s + "'");
-      Reaction r{s, {}};
+      Reaction r{s, labels[k], {}};
       const std::vector<int>& gids = model_.layout().gids();
       std::vector<char> in(pb_.cloud.size(), 0);
       for (int q : it->second) in[q] = 1;
@@ -101,17 +108,30 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
         if (in[gids[i]]) r.nodes.push_back(i);
       reactions_.push_back(r);
     }
+    if (out.isParameter("Applied Displacement")) {
+      const std::string bc = getText(out, "Applied Displacement", "");
+      const Teuchos::ParameterList* bcs =
+          input.isSublist("Boundary Conditions") ? &input.sublist("Boundary Conditions") : nullptr;
+      if (!bcs || !bcs->isSublist(bc) || getText(bcs->sublist(bc), "Type", "") != "Prescribed Displacement")
+        throw InputError(inputFile + ": Output: 'Applied Displacement' = '" + bc +
+                         "' is not a Prescribed Displacement condition");
+      applied_ = std::make_shared<Expression>(scalarAsText(bcs->sublist(bc).getEntry("Value")),
+                                              inputFile + ": Boundary Conditions/" + bc + "/Value");
+      if (applied_->dependsOnSpace())
+        throw InputError(inputFile + ": Output: 'Applied Displacement' = '" + bc + "': its Value depends on x, y or z");
+    }
   }
   if (historyName_.empty()) return;  // no Output list: nothing is written
 
   if (root) {
     std::vector<std::string> cols = {"time", "step"};
+    if (applied_) cols.push_back("Applied_Displacement");
     auto label = [](std::string s) {
       std::replace(s.begin(), s.end(), ' ', '_');
       return s;
     };
     for (const Reaction& r : reactions_)
-      for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(r.set) + "_" + c);
+      for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(r.label) + "_" + c);
     for (const Probe& p : probes_)
       for (const std::string& var : p.variables) {
         if (contains(kVectors, var))
@@ -181,6 +201,7 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
   if (!local.empty()) comm.SumAll(local.data(), global.data(), static_cast<int>(local.size()));
   if (root) {
     std::vector<double> row = {report.time, static_cast<double>(report.step)};
+    if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));
     row.insert(row.end(), global.begin(), global.end());
     history_->writeRow(row);
   }

@@ -1,7 +1,10 @@
 #pragma once
 // Observes converged steps and writes what the Output list asks for: one merged Exodus II file (rank 0
 // gathers) every Output Frequency steps, and a CSV history with reactions and probes every output step.
-// Reaction_<Set>_<C> is the force the supports apply to the body on that node set: -sum (f + b) V.
+// Reaction_<Set>_<C> is the force the supports apply to the body on that node set: -sum (f + b) V;
+// "Reaction Names" replaces <Set> by a short name per entry of "Reactions". "Applied Displacement" names
+// a Prescribed Displacement condition whose (space-independent) value at the step's time becomes the
+// column Applied_Displacement, right after time and step.
 #include <Teuchos_ParameterList.hpp>
 
 #include <memory>
@@ -33,6 +36,7 @@ class OutputManager : public StepObserver {
   };
   struct Reaction {
     std::string set;
+    std::string label;       // column label: the set's name or its "Reaction Names" entry
     std::vector<int> nodes;  // owned-local
   };
   double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
@@ -51,6 +55,7 @@ class OutputManager : public StepObserver {
   std::unique_ptr<ExodusWriter> writer_;
   std::unique_ptr<HistoryWriter> history_;
   std::vector<double> bodyForce_;
+  std::shared_ptr<Expression> applied_;  // "Applied Displacement" condition's value, or null
 };
 
 }  // namespace pf

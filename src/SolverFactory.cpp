@@ -1,7 +1,10 @@
 #include "SolverFactory.hpp"
 
+#include <algorithm>
+
 #include "AdrSolver.hpp"
 #include "InputError.hpp"
+#include "NoxQuasiStaticSolver.hpp"
 #include "VerletSolver.hpp"
 
 namespace pf {
@@ -29,23 +32,41 @@ std::unique_ptr<Solver> makeSolver(const Teuchos::ParameterList& s, const std::s
     requirePositive(o.safetyFactor, where + "/Verlet", "Safety Factor");
     return std::make_unique<VerletSolver>(o);
   }
+  if (s.isSublist("QuasiStatic") || s.isSublist("NOXQuasiStatic")) {
+    // Peridigm's QuasiStatic (Newton) and NOXQuasiStatic lists are both served by the NOX engine.
+    const bool peridigmQs = s.isSublist("QuasiStatic");
+    const Teuchos::ParameterList& l = s.sublist(peridigmQs ? "QuasiStatic" : "NOXQuasiStatic");
+    const std::string lw = where + (peridigmQs ? "/QuasiStatic" : "/NOXQuasiStatic");
+    NoxOptions o;
+    o.loadSteps = get<int>(l, "Number of Load Steps", 1);
+    if (o.loadSteps < 1) throw InputError(lw + ": 'Number of Load Steps' must be at least 1");
+    // Peridigm's decks give one of the two; an absolute tolerance alone means just that test.
+    const bool absOnly = l.isParameter("Absolute Tolerance") && !l.isParameter("Relative Tolerance");
+    o.relativeTolerance = absOnly ? 0.0 : get<double>(l, "Relative Tolerance", o.relativeTolerance);
+    o.absoluteTolerance = get<double>(l, "Absolute Tolerance", 0.0);
+    o.maxIterations = get<int>(l, "Maximum Solver Iterations", get<int>(l, "Max Solver Iterations", o.maxIterations));
+    o.maxCuts = get<int>(l, "Maximum Load Step Cuts", o.maxCuts);
+    o.verbose = get<bool>(l, "Verbose", false);
+    if (o.relativeTolerance < 0 || o.absoluteTolerance < 0) throw InputError(lw + ": tolerances must not be negative");
+    if (o.maxIterations < 1) throw InputError(lw + ": 'Maximum Solver Iterations' must be at least 1");
+    if (o.maxCuts < 0) throw InputError(lw + ": 'Maximum Load Step Cuts' must not be negative");
+    for (const char* nox : {"Direction", "Line Search", "Printing", "Solver Options"})
+      if (l.isSublist(nox)) o.nox.set(nox, l.sublist(nox));
+    if (l.isParameter("Nonlinear Solver")) o.nox.set("Nonlinear Solver", l.get<std::string>("Nonlinear Solver"));
+    o.fallback.relativeTolerance = std::max(o.relativeTolerance, 1e-10);  // ADR's round-off floor is ~3e-13
+    o.fallback.absoluteTolerance = o.absoluteTolerance;
+    return std::make_unique<NoxQuasiStaticSolver>(o);
+  }
   AdrOptions o;
-  const bool peridigmQs = s.isSublist("QuasiStatic");
-  const Teuchos::ParameterList& l = peridigmQs ? s.sublist("QuasiStatic") : s.sublist("Adaptive Dynamic Relaxation");
-  const std::string lw = where + (peridigmQs ? "/QuasiStatic" : "/Adaptive Dynamic Relaxation");
+  const Teuchos::ParameterList& l = s.sublist("Adaptive Dynamic Relaxation");
+  const std::string lw = where + "/Adaptive Dynamic Relaxation";
   o.loadSteps = get<int>(l, "Number of Load Steps", 1);
   if (o.loadSteps < 1) throw InputError(lw + ": 'Number of Load Steps' must be at least 1");
   o.relativeTolerance = get<double>(l, "Relative Tolerance", o.relativeTolerance);
   o.absoluteTolerance = get<double>(l, "Absolute Tolerance", 0.0);
-  if (peridigmQs) {
-    // Peridigm's Newton iteration cap does not transfer to relaxation; only the tolerances do. An absolute
-    // tolerance alone would stop relaxation far earlier than Newton stops, so the relative one stays on.
-    o.relativeTolerance = get<double>(l, "Relative Tolerance", 1e-12);
-  } else {
-    o.maxIterations = get<int>(l, "Maximum Iterations", o.maxIterations);
-    o.safetyFactor = get<double>(l, "Safety Factor", o.safetyFactor);
-    o.verbose = get<bool>(l, "Verbose", false);
-  }
+  o.maxIterations = get<int>(l, "Maximum Iterations", o.maxIterations);
+  o.safetyFactor = get<double>(l, "Safety Factor", o.safetyFactor);
+  o.verbose = get<bool>(l, "Verbose", false);
   requirePositive(o.safetyFactor, lw, "Safety Factor");
   if (o.relativeTolerance < 0 || o.absoluteTolerance < 0) throw InputError(lw + ": tolerances must not be negative");
   if (o.maxIterations < 1) throw InputError(lw + ": 'Maximum Iterations' must be at least 1");

@@ -1,0 +1,296 @@
+#include "NoxQuasiStaticSolver.hpp"
+
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
+#include <Epetra_Vector.h>
+#include <NOX.H>
+#include <NOX_Epetra.H>
+#include <NOX_Epetra_MatrixFree.H>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "LoadStepping.hpp"
+#include "Material.hpp"
+#include "Model.hpp"
+
+namespace pf {
+namespace {
+
+// NOX's view of one load step: x holds the displacements (3 per owned node); F is -(f + b) on free
+// dofs and s (x - xbar) on prescribed ones, s the mean preconditioner diagonal so that both kinds of
+// rows are alike in scale.
+class StepProblem : public NOX::Epetra::Interface::Required, public NOX::Epetra::Interface::Preconditioner {
+ public:
+  StepProblem(Model& model, double t, std::vector<double> xbar, double scale)
+      : model_(model), xbar_(std::move(xbar)), scale_(scale), u_(model.numDofs()), f_(model.numDofs()),
+        fResidual_(model.numDofs()), b_(model.numDofs()) {
+    model.bodyForce(t, b_.data());
+  }
+
+  bool computeF(const Epetra_Vector& x, Epetra_Vector& F, const FillType flag) override {
+    const std::vector<char>& fixed = model_.prescribedMask();
+    const int n = model_.numDofs();
+    for (int k = 0; k < n; ++k) u_[k] = x[k];
+    try {
+      model_.internalForce(u_.data(), f_.data());
+    } catch (const ConstitutiveFailure& e) {
+      failure_ = e.what();
+      return false;
+    }
+    for (int k = 0; k < n; ++k) F[k] = fixed[k] ? scale_ * (x[k] - xbar_[k]) : -(f_[k] + b_[k]);
+    if (flag == Residual) fResidual_ = f_;
+    return true;
+  }
+
+  bool computePreconditioner(const Epetra_Vector&, Epetra_Operator&, Teuchos::ParameterList*) override {
+    return true;  // the pair stiffness is a fixed matrix; Ifpack/ML factor it once per step
+  }
+
+  // Residual measures at the last residual evaluation (the current Newton iterate).
+  ResidualNorms norms() const { return residualNorms(model_, fResidual_, b_); }
+  const std::string& failure() const { return failure_; }
+
+ private:
+  Model& model_;
+  std::vector<double> xbar_;
+  double scale_;
+  std::vector<double> u_, f_, fResidual_, b_;
+  std::string failure_;
+};
+
+// Converged when the force residual on free dofs is below the relative tolerance times the load scale
+// (the same test ADR uses) or the force-density residual is below the absolute tolerance.
+class ForceResidualTest : public NOX::StatusTest::Generic {
+ public:
+  ForceResidualTest(const StepProblem& p, double rel, double abs) : problem_(p), rel_(rel), abs_(abs) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
+    if (!solver.getSolutionGroup().isF()) return status_ = NOX::StatusTest::Unevaluated;
+    last_ = problem_.norms();
+    tol_ = rel_ * last_.load;
+    const bool ok = last_.residual <= tol_ || (abs_ > 0 && last_.residualDensity <= abs_) || last_.residual == 0.0;
+    return status_ = ok ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& os, int indent) const override {
+    for (int i = 0; i < indent; ++i) os << ' ';
+    os << "force residual " << last_.residual << " N (tolerance " << tol_ << " N), density "
+       << last_.residualDensity << "\n";
+    return os;
+  }
+  const ResidualNorms& last() const { return last_; }
+  double tolerance() const { return tol_; }
+
+ private:
+  const StepProblem& problem_;
+  double rel_, abs_, tol_ = 0;
+  ResidualNorms last_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
+// The preconditioner matrix: each bond's extension stiffness c V_j n n^T between its two nodes (the
+// reverse bond's c taken as c m_i/m_j), prescribed rows replaced by s on the diagonal.
+Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& map, double* scaleOut) {
+  const DistributedLayout& L = model.layout();
+  const BondFamily& fam = L.family();
+  const std::vector<int>& gid = L.gids();
+  const std::vector<double>& x = model.coordinates();
+  const std::vector<double>& V = model.volume();
+  const std::vector<double>& m = model.weightedVolume();
+  const std::vector<char>& fixed = model.prescribedMask();
+  const std::vector<double> c = model.pairStiffness();
+  std::vector<double> diagSum(3 * model.numOwned(), 0.0);
+  auto A = Teuchos::rcp(new Epetra_CrsMatrix(Copy, map, 0));
+  std::vector<int> cols;
+  std::vector<double> vals;
+  double diagTotal = 0;
+  int diagCount = 0;
+  for (int i = 0; i < model.numOwned(); ++i) {
+    for (int a = 0; a < 3; ++a) {
+      const int row = 3 * gid[i] + a;
+      cols.assign({3 * gid[i], 3 * gid[i] + 1, 3 * gid[i] + 2});
+      vals.assign(3, 0.0);
+      for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+        const int j = fam.neighbors[b];
+        double n[3];
+        for (int d = 0; d < 3; ++d) n[d] = (x[3 * j + d] - x[3 * i + d]) / fam.refLength[b];
+        const double k = c[b] * (1.0 + m[i] / m[j]) * V[j];
+        for (int d = 0; d < 3; ++d) {
+          vals[d] += k * n[a] * n[d];
+          cols.push_back(3 * gid[j] + d);
+          vals.push_back(-k * n[a] * n[d]);
+        }
+      }
+      if (!fixed[3 * i + a]) {
+        diagTotal += vals[a];
+        ++diagCount;
+      }
+      A->InsertGlobalValues(row, static_cast<int>(cols.size()), vals.data(), cols.data());
+    }
+  }
+  double in[2] = {diagTotal, static_cast<double>(diagCount)}, out[2];
+  L.comm().SumAll(in, out, 2);
+  const double s = out[1] > 0 ? out[0] / out[1] : 1.0;
+  A->FillComplete();
+  // Prescribed rows: s on the diagonal, nothing else (the constraint x = xbar decouples them).
+  for (int i = 0; i < model.numOwned(); ++i)
+    for (int a = 0; a < 3; ++a) {
+      if (!fixed[3 * i + a]) continue;
+      int len = 0;
+      double* rv = nullptr;
+      int* ri = nullptr;
+      A->ExtractMyRowView(3 * i + a, len, rv, ri);
+      for (int e = 0; e < len; ++e) rv[e] = A->GCID(ri[e]) == 3 * gid[i] + a ? s : 0.0;
+    }
+  *scaleOut = s;
+  return A;
+}
+
+void setDefault(Teuchos::ParameterList& l, const std::string& name, const std::string& v) {
+  if (!l.isParameter(name)) l.set(name, v);
+}
+template <class T>
+void setDefault(Teuchos::ParameterList& l, const std::string& name, T v) {
+  if (!l.isParameter(name)) l.set(name, v);
+}
+
+}  // namespace
+
+NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::vector<double>& u, double t) {
+  const int n = model.numDofs();
+  std::vector<int> dofGids(n);
+  for (int i = 0; i < model.numOwned(); ++i)
+    for (int a = 0; a < 3; ++a) dofGids[3 * i + a] = 3 * model.layout().gids()[i] + a;
+  Epetra_Map map(-1, n, dofGids.data(), 0, model.layout().comm());
+  double scale = 1.0;
+  Teuchos::RCP<Epetra_CrsMatrix> M = pairMatrix(model, map, &scale);
+
+  std::vector<double> xbar(u);  // prescribed values were set by the predictor
+  auto problem = Teuchos::rcp(new StepProblem(model, t, xbar, scale));
+  Epetra_Vector x0(map);
+  for (int k = 0; k < n; ++k) x0[k] = u[k];
+  NOX::Epetra::Vector noxX0(x0, NOX::DeepCopy);
+
+  auto params = Teuchos::rcp(new Teuchos::ParameterList(opt_.nox));
+  setDefault(*params, "Nonlinear Solver", "Line Search Based");
+  Teuchos::ParameterList& print = params->sublist("Printing");
+  setDefault(print, "Output Information",
+             opt_.verbose && model.layout().rank() == 0
+                 ? NOX::Utils::OuterIteration + NOX::Utils::OuterIterationStatusTest + NOX::Utils::Warning
+                 : NOX::Utils::Error);
+  setDefault(print, "MyPID", model.layout().rank());
+  Teuchos::ParameterList& dir = params->sublist("Direction");
+  setDefault(dir, "Method", "Newton");
+  Teuchos::ParameterList& ls = dir.sublist("Newton").sublist("Linear Solver");
+  setDefault(ls, "Aztec Solver", "GMRES");
+  setDefault(ls, "Max Iterations", 800);
+  setDefault(ls, "Tolerance", 1e-9);
+  setDefault(ls, "Size of Krylov Subspace", 200);
+  setDefault(ls, "Preconditioner", "New Ifpack");
+  setDefault(ls, "Preconditioner Reuse Policy", "Reuse");
+  setDefault(ls, "Max Age Of Prec", 1000000);
+  setDefault(ls, "Output Frequency", 0);
+  if (ls.get<std::string>("Preconditioner") == "New Ifpack") {
+    Teuchos::ParameterList& ifp = ls.sublist("Ifpack");
+    setDefault(ifp, "fact: level-of-fill", 1);
+  }
+  Teuchos::ParameterList& search = params->sublist("Line Search");
+  setDefault(search, "Method", "Polynomial");
+
+  auto mf = Teuchos::rcp(new NOX::Epetra::MatrixFree(print, problem, noxX0));
+  auto linSys = Teuchos::rcp(new NOX::Epetra::LinearSystemAztecOO(print, ls, mf, mf, problem, M, noxX0));
+  auto group = Teuchos::rcp(new NOX::Epetra::Group(print, problem, noxX0, linSys));
+
+  auto force = Teuchos::rcp(new ForceResidualTest(*problem, opt_.relativeTolerance, opt_.absoluteTolerance));
+  auto combo = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
+  combo->addStatusTest(force);
+  combo->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(opt_.maxIterations)));
+  combo->addStatusTest(Teuchos::rcp(new NOX::StatusTest::FiniteValue));
+
+  Outcome out;
+  NOX::StatusTest::StatusType status = NOX::StatusTest::Failed;
+  try {
+    Teuchos::RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(group, combo, params);
+    status = solver->solve();
+    out.iterations = solver->getNumIterations();
+    const auto& sol = dynamic_cast<const NOX::Epetra::Vector&>(solver->getSolutionGroup().getX()).getEpetraVector();
+    for (int k = 0; k < n; ++k) u[k] = sol[k];
+  } catch (const std::exception& e) {
+    status = NOX::StatusTest::Failed;
+  }
+  out.converged = status == NOX::StatusTest::Converged && force->getStatus() == NOX::StatusTest::Converged;
+  out.residual = force->last().residual;
+  out.tolerance = force->tolerance();
+  return out;
+}
+
+NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::vector<double>& u,
+                                                            std::vector<double>& duPrev, double tA, double tB,
+                                                            int depth) {
+  const bool root = model.layout().rank() == 0;
+  const std::vector<double> uA(u);
+  predictStep(model, tB, u, duPrev);
+  Outcome o = newton(model, u, tB);
+  if (o.converged) {
+    std::vector<double> f(model.numDofs());
+    model.internalForce(u.data(), f.data());  // the last residual may have been a perturbed one
+    model.commit();
+    for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+    return o;
+  }
+  model.rollback();
+  u = uA;
+  if (depth < opt_.maxCuts) {
+    if (root) std::printf("  Newton did not converge on [%g, %g] (residual %.3e, tolerance %.3e): cutting the step\n",
+                          tA, tB, o.residual, o.tolerance);
+    const double tm = 0.5 * (tA + tB);
+    std::vector<double> half(duPrev);
+    for (double& d : half) d *= 0.5;
+    Outcome a = advance(model, u, half, tA, tm, depth + 1);
+    Outcome b = advance(model, u, half, tm, tB, depth + 1);
+    for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+    b.iterations += a.iterations;
+    return b;
+  }
+  if (root) std::printf("  Newton failed on [%g, %g] after %d cuts: falling back to adaptive dynamic relaxation\n", tA,
+                        tB, depth);
+  predictStep(model, tB, u, duPrev);
+  AdrSolver adr(opt_.fallback);
+  const AdrSolver::StepResult r = adr.relax(model, u, tB, uA);  // throws SolverFailure if it fails too
+  std::vector<double> f(model.numDofs());
+  model.internalForce(u.data(), f.data());
+  model.commit();
+  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+  return Outcome{true, r.iterations, 0, r.residual, r.tolerance};
+}
+
+void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+                               StepObserver& observer) {
+  using Clock = std::chrono::steady_clock;
+  const int n = model.numDofs();
+  const bool root = model.layout().rank() == 0;
+  std::vector<double> f(n), duPrev(n, 0.0);
+  model.applyPrescribed(t0, u.data());
+  model.internalForce(u.data(), f.data());
+  std::fill(v.begin(), v.end(), 0.0);
+  observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
+  const double dt = (t1 - t0) / opt_.loadSteps;
+  for (int step = 1; step <= opt_.loadSteps; ++step) {
+    auto start = Clock::now();
+    const double tA = t0 + (t1 - t0) * (step - 1) / opt_.loadSteps, tB = t0 + (t1 - t0) * step / opt_.loadSteps;
+    const std::vector<double> uA(u);
+    const Outcome o = advance(model, u, duPrev, tA, tB, 0);
+    model.internalForce(u.data(), f.data());
+    for (int k = 0; k < n; ++k) v[k] = (u[k] - uA[k]) / dt;  // load-step rate, as Peridigm writes it
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    if (root) {
+      std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d  residual %.3e (tol %.3e)  wall %.2f s\n", step,
+                  opt_.loadSteps, tB, o.iterations, o.residual, o.tolerance, wall);
+      std::fflush(stdout);
+    }
+    observer.onStep(StepReport{step, tB, o.iterations, o.residual, o.tolerance, wall}, u, v, f);
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,45 @@
+#pragma once
+// Implicit quasi-static load steps by NOX's line-search Newton method with a Jacobian-free Krylov solve:
+// J v is NOX's finite-difference directional derivative of the residual (so every material, plastic
+// ones included, gets its consistent tangent without writing one), preconditioned by Ifpack/ML on the
+// assembled pair stiffness (each bond's extension term, elastic moduli). A step that fails is cut in
+// halves up to Maximum Cuts times; a step still failing is relaxed by ADR, and the fallback is logged.
+#include <Teuchos_ParameterList.hpp>
+
+#include "AdrSolver.hpp"
+#include "Solver.hpp"
+
+namespace pf {
+
+struct NoxOptions {
+  int loadSteps = 1;
+  double relativeTolerance = 1e-10;  // of the load scale (reaction + body force), as ADR's
+  double absoluteTolerance = 0.0;    // on the residual force-density norm (Peridigm's unit)
+  int maxIterations = 30;            // Newton iterations per (sub)step
+  int maxCuts = 4;                   // a failing step is halved at most this many times
+  bool verbose = false;              // print NOX's residual history
+  Teuchos::ParameterList nox;        // "Direction", "Line Search", "Printing", ... passed to NOX
+  AdrOptions fallback;
+};
+
+class NoxQuasiStaticSolver : public Solver {
+ public:
+  explicit NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)) {}
+  std::string name() const override { return "NOXQuasiStatic (Newton-Krylov)"; }
+  void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+           StepObserver& observer) override;
+
+ private:
+  struct Outcome {
+    bool converged = false;
+    int iterations = 0, linearIterations = 0;
+    double residual = 0, tolerance = 0;
+  };
+  Outcome newton(Model& model, std::vector<double>& u, double t);
+  // Solves [tA, tB] from the converged u at tA, cutting or falling back as needed; commits its end.
+  Outcome advance(Model& model, std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, int depth);
+
+  NoxOptions opt_;
+};
+
+}  // namespace pf
