@@ -33,3 +33,11 @@ void ElasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const
 namespace pf {
 void ElasticMaterial::pairStiffness(const FamilyView& fam, double* c) const { osbPairStiffness(fam, osb_, c); }
 }  // namespace pf
+
+namespace pf {
+bool ElasticMaterial::forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore&,
+                                      double* dforce) const {
+  osbElasticForceDerivative(fam, osb_, y, dy, dforce);
+  return true;
+}
+}  // namespace pf

@@ -35,6 +35,15 @@ class Material {
   // length): the diagonal fictitious density of adaptive dynamic relaxation and the stable time step.
   virtual void stiffnessBound(const FamilyView& fam, double* bound) const = 0;
 
+  // The exact directional derivative of computeForce at deformed positions y along dy (3 per overlap
+  // node): adds dF to dforce with the same two-ended accumulation. Reads the committed state (the
+  // linearisation point of an elastic step). Returns false if the model has no exact tangent; the
+  // implicit solver then differentiates the residual numerically.
+  virtual bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
+                               double* dforce) const {
+    return false;
+  }
+
   // Per bond b of owned nodes [fam.begin, fam.end): c_b such that c_b V_j n n^T approximates the part of
   // dF_i/du_j carried by the bond's own extension (no dilatation coupling): the sparse preconditioner of
   // the implicit solver. Elastic moduli are enough; the Krylov solve applies the exact operator.

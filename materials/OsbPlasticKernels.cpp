@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "Material.hpp"
+#include "OsbKernels.hpp"
 
 namespace pf {
 
@@ -26,17 +27,11 @@ YieldConstants yieldConstants(Dimension dim, double my) {
   return {4.0 / (3.0 * my), 16.0 / (3.0 * my), 2.5 / my};
 }
 
-inline double bondLength(const double* y, int i, int j) {
-  const double d0 = y[3 * j] - y[3 * i], d1 = y[3 * j + 1] - y[3 * i + 1], d2 = y[3 * j + 2] - y[3 * i + 2];
-  return std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
-}
-
 }  // namespace
 
 void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
                 double* force) {
   const OsbConstants& c = p.osb;
-  const double* V = fam.volume;
   // beta: does the dilatation see the plastic extension (Eq. 16)? 3D: either way (sum x e^dp = 0 for
   // omega = 1). Plane stress: yes. Plane strain: no -- only then is the in-plane mean stress classical
   // (see docs/materials.md).
@@ -49,8 +44,18 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
   const double g2 = phi * (1.0 - (beta ? c.c * c.k * c.D : 0.0));
   const double KH = p.isoHardening + p.kinHardening;
 
+  osb::FamilyScratch& scr = osb::familyScratch(fam);
+  const double* __restrict len = scr.len;
+  const double* __restrict vj = scr.vj;
+  double* __restrict tdv = scr.a;  // trial deviatoric force state
+  double* __restrict sv = scr.b;   // t / |y_j - y_i|
+
   for (int i = fam.begin; i < fam.end; ++i) {
-    const int b0 = fam.offsets[i], b1 = fam.offsets[i + 1];
+    const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
+    const double* __restrict xr = fam.refLength + b0;
+    const double* __restrict w = fam.influence + b0;
+    const double* __restrict epN = s.edpN + b0;
+    double* __restrict ep = s.edp + b0;
     const double m = fam.weightedVolume[i];
     const double invm = 1.0 / m;
     double my = m;
@@ -61,27 +66,34 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
     const YieldConstants yc = yieldConstants(p.dim, my);
     const double bm = c.B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
 
+    // Bond vectors, lengths (one sqrt per bond and step) and neighbour volumes, once per node.
+    osb::gatherFamily(fam, y, i, scr);
+
     // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
     // osbDilatation so that the elastic response is bit-identical to "Elastic".
-    double sum = 0.0;
-    for (int b = b0; b < b1; ++b) {
-      const int j = fam.neighbors[b];
-      const double x = fam.refLength[b];
-      double e = bondLength(y, i, j) - x;
-      if (beta) e -= s.edpN[b];
-      sum += fam.influence[b] * x * e * V[j];
-    }
+    double sum = osb::dilatationSum(w, xr, len, beta ? epN : nullptr, vj, n);
     const double thetaTr = c.k * c.D * sum / m;
 
     // Trial deviatoric force state (Eqs. 40-41) and its moments.
+    const double cth = c.c * thetaTr;
+    for (int k = 0; k < n; ++k) tdv[k] = w[k] * bm * (((len[k] - xr[k]) - cth * xr[k]) - epN[k]);
+    // Two interleaved partial sums per moment (even and odd bonds): independent add chains.
     double S2 = 0, Sx = 0, S3 = 0, A3 = 0, Xx = 0;
-    for (int b = b0; b < b1; ++b) {
-      const int j = fam.neighbors[b];
-      const double x = fam.refLength[b];
-      const double e = bondLength(y, i, j) - x;
-      const double td = fam.influence[b] * bm * (e - c.c * thetaTr * x - s.edpN[b]);
-      const double tv = td * V[j];
-      S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += std::fabs(td) * td * tv; Xx += x * x * V[j];
+    {
+      double S2b = 0, Sxb = 0, S3b = 0, A3b = 0, Xxb = 0;
+      int k = 0;
+      for (; k + 2 <= n; k += 2) {
+        const double x = xr[k], td = tdv[k], tv = td * vj[k];
+        const double xb = xr[k + 1], tdb = tdv[k + 1], tvb = tdb * vj[k + 1];
+        S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += std::fabs(td) * td * tv; Xx += x * x * vj[k];
+        S2b += tdb * tvb; Sxb += xb * tvb; S3b += tdb * tdb * tvb; A3b += std::fabs(tdb) * tdb * tvb;
+        Xxb += xb * xb * vj[k + 1];
+      }
+      for (; k < n; ++k) {
+        const double x = xr[k], td = tdv[k], tv = td * vj[k];
+        S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += std::fabs(td) * td * tv; Xx += x * x * vj[k];
+      }
+      S2 += S2b; Sx += Sxb; S3 += S3b; A3 += A3b; Xx += Xxb;
     }
     // Split t^d = t_perp + pp x with t_perp . x = 0: the two parts decay at different rates in plane
     // stress, and only pp enters the 2D (t.x)^2 term.
@@ -145,20 +157,11 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
     double theta = thetaTr;
     if (dlam > 0.0) {
       const double a1 = dlam * G1, a2 = dlam * phi * G2 * pp;
-      sum = 0.0;
-      for (int b = b0; b < b1; ++b) {
-        const int j = fam.neighbors[b];
-        const double x = fam.refLength[b];
-        double e = bondLength(y, i, j) - x;
-        const double td = fam.influence[b] * bm * (e - c.c * thetaTr * x - s.edpN[b]);
-        const double edp = s.edpN[b] + a1 * (td - pp * x) + a2 * x;
-        s.edp[b] = edp;
-        if (beta) e -= edp;
-        sum += fam.influence[b] * x * e * V[j];
-      }
+      for (int k = 0; k < n; ++k) ep[k] = epN[k] + a1 * (tdv[k] - pp * xr[k]) + a2 * xr[k];
+      sum = osb::dilatationSum(w, xr, len, beta ? ep : nullptr, vj, n);
       theta = c.k * c.D * sum / m;
     } else {
-      for (int b = b0; b < b1; ++b) s.edp[b] = s.edpN[b];
+      for (int k = 0; k < n; ++k) ep[k] = epN[k];
     }
 
     s.lambda[i] = s.lambdaN[i] + dlam;
@@ -174,19 +177,8 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
     // with e^d - e^dp), along the deformed bond.
     const double iso = (c.A - c.B * c.c) * theta * invm;
     const double dev = c.B * invm;
-    const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-    double fi0 = 0, fi1 = 0, fi2 = 0;
-    for (int b = b0; b < b1; ++b) {
-      const int j = fam.neighbors[b];
-      const double d0 = y[3 * j] - yi0, d1 = y[3 * j + 1] - yi1, d2 = y[3 * j + 2] - yi2;
-      const double len = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2);
-      const double x = fam.refLength[b];
-      const double t = fam.influence[b] * (iso * x + dev * ((len - x) - s.edp[b]));
-      const double sc = t / len;
-      fi0 += sc * d0 * V[j]; fi1 += sc * d1 * V[j]; fi2 += sc * d2 * V[j];
-      force[3 * j] -= sc * d0 * V[i]; force[3 * j + 1] -= sc * d1 * V[i]; force[3 * j + 2] -= sc * d2 * V[i];
-    }
-    force[3 * i] += fi0; force[3 * i + 1] += fi1; force[3 * i + 2] += fi2;
+    for (int k = 0; k < n; ++k) sv[k] = w[k] * (iso * xr[k] + dev * ((len[k] - xr[k]) - ep[k])) / len[k];
+    osb::addBondForces(fam, i, scr, sv, force);
   }
 }
 

@@ -333,7 +333,7 @@ void validateSolver(const PL& s, const std::string& file) {
     checkList(a, file, ap,
               {{"Number of Load Steps", T::Int, true}, {"Relative Tolerance", T::Double, false},
                {"Absolute Tolerance", T::Double, false}, {"Maximum Iterations", T::Int, false},
-               {"Safety Factor", T::Double, false}},
+               {"Safety Factor", T::Double, false}, {"Verbose", T::Bool, false}},
               {});
     atLeastOne(a, "Number of Load Steps", file, ap);
     atLeastOne(a, "Maximum Iterations", file, ap);
@@ -351,7 +351,22 @@ void validateSolver(const PL& s, const std::string& file) {
     atLeastOne(q, "Maximum Solver Iterations", file, qp);
     for (const char* n : {"Relative Tolerance", "Absolute Tolerance"}) positive(q, n, file, qp);
   }
-  // NOXQuasiStatic: its nested NOX lists are passed through unchecked for now.
+  if (s.isSublist("NOXQuasiStatic")) {
+    // Periforge's and Peridigm's scalar options are checked here; the NOX sub-lists (Direction, Line
+    // Search, Printing, Solver Options) pass through to NOX, which validates its own parameters.
+    const std::string np = path + "/NOXQuasiStatic";
+    const PL& q = s.sublist("NOXQuasiStatic");
+    checkList(q, file, np,
+              {{"Number of Load Steps", T::Int, true}, {"Absolute Tolerance", T::Double, false},
+               {"Relative Tolerance", T::Double, false}, {"Maximum Solver Iterations", T::Int, false},
+               {"Max Solver Iterations", T::Int, false}, {"Maximum Load Step Cuts", T::Int, false},
+               {"Verbose", T::Bool, false}, {"Nonlinear Solver", T::String, false}},
+              {"Direction", "Line Search", "Printing", "Solver Options"});
+    atLeastOne(q, "Number of Load Steps", file, np);
+    atLeastOne(q, "Maximum Solver Iterations", file, np);
+    atLeastOne(q, "Max Solver Iterations", file, np);
+    for (const char* n : {"Relative Tolerance", "Absolute Tolerance"}) positive(q, n, file, np);
+  }
 }
 
 void checkVariables(const std::vector<std::string>& names, const std::string& file, const std::string& path,

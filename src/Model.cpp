@@ -35,6 +35,10 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
   yOverlap_.assign(3 * no, 0.0);
   fOverlap_.assign(3 * no, 0.0);
   prescribed_.assign(3 * static_cast<std::size_t>(n), 0);
+  // A planar model has no out-of-plane motion: z stays 0 and is never a free unknown of any solver.
+  for (const BlockModel& b : blocks_)
+    if (isPlanar(b.material->dimension()))
+      for (int i = b.begin; i < b.end; ++i) prescribed_[3 * i + 2] = 1;
 }
 
 void Model::internalForce(const double* u, double* f) {
@@ -54,6 +58,29 @@ std::vector<double> Model::pairStiffness() const {
     b.material->pairStiffness(
         makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon), c.data());
   return c;
+}
+
+bool Model::hasExactTangent() const {
+  // Probe each material once with an empty range: cheap, and keeps the question inside the material.
+  for (const BlockModel& b : blocks_) {
+    FamilyView v = makeView(layout_->family(), b.begin, b.begin, x_.data(), volume_.data(), m_.data(), b.horizon);
+    if (!b.material->forceDerivative(v, nullptr, nullptr, state_, nullptr)) return false;
+  }
+  return true;
+}
+
+bool Model::forceDerivative(const double* u, const double* du, double* df) {
+  layout_->importToOverlap(u, uOverlap_.data(), 3);
+  for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
+  duOverlap_.resize(yOverlap_.size());
+  layout_->importToOverlap(du, duOverlap_.data(), 3);
+  std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
+  for (const BlockModel& b : blocks_) {
+    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+    if (!b.material->forceDerivative(view, yOverlap_.data(), duOverlap_.data(), state_, fOverlap_.data())) return false;
+  }
+  layout_->exportAdd(fOverlap_.data(), df, 3);
+  return true;
 }
 
 void Model::addPrescribedDisplacement(NodalLoad load) {

@@ -43,6 +43,9 @@ class Model {
   // Internal force density f (3 per owned node) for displacements u (3 per owned node). Computes the
   // materials' trial state. Throws ConstitutiveFailure if a material cannot update.
   void internalForce(const double* u, double* f);
+  // df = (d f / d u) du at u, exactly, if every material has an exact tangent (returns false otherwise).
+  bool forceDerivative(const double* u, const double* du, double* df);
+  bool hasExactTangent() const;
   void commit() { state_.commit(); }
   void rollback() { state_.rollback(); }
 
@@ -73,7 +76,7 @@ class Model {
   std::vector<double> x_, volume_, m_, density_, bound_;
   std::vector<BlockModel> blocks_;
   StateStore state_;
-  std::vector<double> uOverlap_, yOverlap_, fOverlap_;
+  std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;
   std::vector<char> prescribed_;
 };

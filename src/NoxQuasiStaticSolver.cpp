@@ -7,7 +7,9 @@
 #include <NOX_Epetra.H>
 #include <NOX_Epetra_MatrixFree.H>
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 #include <cstdio>
 
@@ -58,6 +60,81 @@ class StepProblem : public NOX::Epetra::Interface::Required, public NOX::Epetra:
   double scale_;
   std::vector<double> u_, f_, fResidual_, b_;
   std::string failure_;
+};
+
+// The Jacobian of StepProblem's residual, applied matrix-free: -df on free rows, s dx on prescribed ones.
+// df is the materials' exact forceDerivative where all have one; otherwise a forward difference of the
+// force whose perturbation is scaled to the model's length (1e-7 of the shortest bond): NOX's own
+// matrix-free operator scales it by |x|, which is ~0 at the first load step and gives no derivative.
+class TangentOperator : public Epetra_Operator, public NOX::Epetra::Interface::Jacobian {
+ public:
+  TangentOperator(Model& model, const Epetra_Map& map, double scale)
+      : model_(model), map_(map), scale_(scale), exact_(model.hasExactTangent()), u_(model.numDofs()),
+        du_(model.numDofs()), df_(model.numDofs()), f0_(model.numDofs()), up_(model.numDofs()) {
+    double shortest = std::numeric_limits<double>::max();
+    for (double r : model.layout().family().refLength) shortest = std::min(shortest, r);
+    double g = 0;
+    double neg = -shortest;
+    model.layout().comm().MaxAll(&neg, &g, 1);
+    step_ = 1e-7 * (-g);
+  }
+  bool exact() const { return exact_; }
+
+  bool computeJacobian(const Epetra_Vector& x, Epetra_Operator&) override {
+    for (int k = 0; k < model_.numDofs(); ++k) u_[k] = x[k];
+    if (exact_) return true;
+    try {
+      model_.internalForce(u_.data(), f0_.data());
+    } catch (const ConstitutiveFailure&) {
+      return false;
+    }
+    return true;
+  }
+  int Apply(const Epetra_MultiVector& X, Epetra_MultiVector& Y) const override {
+    const std::vector<char>& fixed = model_.prescribedMask();
+    const int n = model_.numDofs();
+    for (int col = 0; col < X.NumVectors(); ++col) {
+      for (int k = 0; k < n; ++k) du_[k] = X[col][k];
+      if (exact_) {
+        if (!model_.forceDerivative(u_.data(), du_.data(), df_.data())) return -1;
+      } else {
+        double local = 0, vmax = 0;
+        for (int k = 0; k < n; ++k) local = std::max(local, std::fabs(du_[k]));
+        model_.layout().comm().MaxAll(&local, &vmax, 1);
+        if (vmax == 0) {
+          std::fill(df_.begin(), df_.end(), 0.0);
+        } else {
+          const double h = step_ / vmax;
+          for (int k = 0; k < n; ++k) up_[k] = u_[k] + h * du_[k];
+          try {
+            model_.internalForce(up_.data(), df_.data());
+          } catch (const ConstitutiveFailure&) {
+            return -1;
+          }
+          for (int k = 0; k < n; ++k) df_[k] = (df_[k] - f0_[k]) / h;
+        }
+      }
+      for (int k = 0; k < n; ++k) Y[col][k] = fixed[k] ? scale_ * du_[k] : -df_[k];
+    }
+    return 0;
+  }
+  int SetUseTranspose(bool) override { return -1; }
+  int ApplyInverse(const Epetra_MultiVector&, Epetra_MultiVector&) const override { return -1; }
+  double NormInf() const override { return 0.0; }
+  const char* Label() const override { return "Periforge tangent"; }
+  bool UseTranspose() const override { return false; }
+  bool HasNormInf() const override { return false; }
+  const Epetra_Comm& Comm() const override { return map_.Comm(); }
+  const Epetra_Map& OperatorDomainMap() const override { return map_; }
+  const Epetra_Map& OperatorRangeMap() const override { return map_; }
+
+ private:
+  Model& model_;
+  const Epetra_Map& map_;
+  double scale_, step_ = 0;
+  bool exact_;
+  std::vector<double> u_;
+  mutable std::vector<double> du_, df_, f0_, up_;
 };
 
 // Converged when the force residual on free dofs is below the relative tolerance times the load scale
@@ -159,12 +236,16 @@ void setDefault(Teuchos::ParameterList& l, const std::string& name, T v) {
 
 NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::vector<double>& u, double t) {
   const int n = model.numDofs();
-  std::vector<int> dofGids(n);
-  for (int i = 0; i < model.numOwned(); ++i)
-    for (int a = 0; a < 3; ++a) dofGids[3 * i + a] = 3 * model.layout().gids()[i] + a;
-  Epetra_Map map(-1, n, dofGids.data(), 0, model.layout().comm());
-  double scale = 1.0;
-  Teuchos::RCP<Epetra_CrsMatrix> M = pairMatrix(model, map, &scale);
+  if (M_.is_null()) {  // the pair stiffness depends on the reference configuration only: build it once
+    std::vector<int> dofGids(n);
+    for (int i = 0; i < model.numOwned(); ++i)
+      for (int a = 0; a < 3; ++a) dofGids[3 * i + a] = 3 * model.layout().gids()[i] + a;
+    map_ = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm()));
+    M_ = pairMatrix(model, *map_, &scale_);
+  }
+  const Epetra_Map& map = *map_;
+  const double scale = scale_;
+  const Teuchos::RCP<Epetra_CrsMatrix>& M = M_;
 
   std::vector<double> xbar(u);  // prescribed values were set by the predictor
   auto problem = Teuchos::rcp(new StepProblem(model, t, xbar, scale));
@@ -175,11 +256,12 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
   auto params = Teuchos::rcp(new Teuchos::ParameterList(opt_.nox));
   setDefault(*params, "Nonlinear Solver", "Line Search Based");
   Teuchos::ParameterList& print = params->sublist("Printing");
+  // Same on every rank: NOX computes the norms it prints collectively and prints on Output Processor.
   setDefault(print, "Output Information",
-             opt_.verbose && model.layout().rank() == 0
-                 ? NOX::Utils::OuterIteration + NOX::Utils::OuterIterationStatusTest + NOX::Utils::Warning
-                 : NOX::Utils::Error);
+             opt_.verbose ? NOX::Utils::OuterIteration + NOX::Utils::OuterIterationStatusTest + NOX::Utils::Warning
+                          : NOX::Utils::Error);
   setDefault(print, "MyPID", model.layout().rank());
+  setDefault(print, "Output Processor", 0);
   Teuchos::ParameterList& dir = params->sublist("Direction");
   setDefault(dir, "Method", "Newton");
   Teuchos::ParameterList& ls = dir.sublist("Newton").sublist("Linear Solver");
@@ -193,13 +275,13 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
   setDefault(ls, "Output Frequency", 0);
   if (ls.get<std::string>("Preconditioner") == "New Ifpack") {
     Teuchos::ParameterList& ifp = ls.sublist("Ifpack");
-    setDefault(ifp, "fact: level-of-fill", 1);
+    setDefault(ifp, "fact: level-of-fill", 0);
   }
   Teuchos::ParameterList& search = params->sublist("Line Search");
   setDefault(search, "Method", "Polynomial");
 
-  auto mf = Teuchos::rcp(new NOX::Epetra::MatrixFree(print, problem, noxX0));
-  auto linSys = Teuchos::rcp(new NOX::Epetra::LinearSystemAztecOO(print, ls, mf, mf, problem, M, noxX0));
+  auto tangent = Teuchos::rcp(new TangentOperator(model, map, scale));
+  auto linSys = Teuchos::rcp(new NOX::Epetra::LinearSystemAztecOO(print, ls, tangent, tangent, problem, M, noxX0));
   auto group = Teuchos::rcp(new NOX::Epetra::Group(print, problem, noxX0, linSys));
 
   auto force = Teuchos::rcp(new ForceResidualTest(*problem, opt_.relativeTolerance, opt_.absoluteTolerance));
@@ -214,6 +296,8 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
     Teuchos::RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(group, combo, params);
     status = solver->solve();
     out.iterations = solver->getNumIterations();
+    if (ls.isSublist("Output"))
+      out.linearIterations = ls.sublist("Output").get<int>("Total Number of Linear Iterations", 0);
     const auto& sol = dynamic_cast<const NOX::Epetra::Vector&>(solver->getSolutionGroup().getX()).getEpetraVector();
     for (int k = 0; k < n; ++k) u[k] = sol[k];
   } catch (const std::exception& e) {
@@ -251,6 +335,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
     Outcome b = advance(model, u, half, tm, tB, depth + 1);
     for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
     b.iterations += a.iterations;
+    b.linearIterations += a.linearIterations;
     return b;
   }
   if (root) std::printf("  Newton failed on [%g, %g] after %d cuts: falling back to adaptive dynamic relaxation\n", tA,
@@ -285,8 +370,8 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
     for (int k = 0; k < n; ++k) v[k] = (u[k] - uA[k]) / dt;  // load-step rate, as Peridigm writes it
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     if (root) {
-      std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d  residual %.3e (tol %.3e)  wall %.2f s\n", step,
-                  opt_.loadSteps, tB, o.iterations, o.residual, o.tolerance, wall);
+      std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d (linear %5d)  residual %.3e (tol %.3e)  wall %.2f s\n",
+                  step, opt_.loadSteps, tB, o.iterations, o.linearIterations, o.residual, o.tolerance, wall);
       std::fflush(stdout);
     }
     observer.onStep(StepReport{step, tB, o.iterations, o.residual, o.tolerance, wall}, u, v, f);

@@ -4,7 +4,10 @@
 // ones included, gets its consistent tangent without writing one), preconditioned by Ifpack/ML on the
 // assembled pair stiffness (each bond's extension term, elastic moduli). A step that fails is cut in
 // halves up to Maximum Cuts times; a step still failing is relaxed by ADR, and the fallback is logged.
+#include <Epetra_CrsMatrix.h>
+#include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
 
 #include "AdrSolver.hpp"
 #include "Solver.hpp"
@@ -40,6 +43,9 @@ class NoxQuasiStaticSolver : public Solver {
   Outcome advance(Model& model, std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, int depth);
 
   NoxOptions opt_;
+  Teuchos::RCP<Epetra_Map> map_;       // owned dofs, global id 3 * point + component
+  Teuchos::RCP<Epetra_CrsMatrix> M_;   // preconditioner matrix (pair stiffness), built on first use
+  double scale_ = 1.0;                 // its mean diagonal: the weight of the prescribed rows
 };
 
 }  // namespace pf

@@ -11,7 +11,7 @@ periforge_check(plate_iso_coarse_np2_vs_gold plate_iso_coarse_np2
   ${CMAKE_CURRENT_BINARY_DIR}/regression/plate_iso_coarse_np2/plate_iso_coarse.csv
   ${REG}/plate/plate_iso_coarse_gold.csv
   --default abs:2.0
-  --tol time=abs:1e-12 --tol step=abs:0
+  --tol time=abs:1e-12 --tol step=abs:0 --tol Applied_Displacement=abs:1e-12
   --tol Probe_A_Signed_Von_Mises_Stress=abs:6e4 --tol Probe_B_Signed_Von_Mises_Stress=abs:6e4
   --tol Probe_A_Equivalent_Plastic_Strain=abs:4e-7 --tol Probe_B_Equivalent_Plastic_Strain=abs:4e-7
   --tol Probe_Applied_DisplacementX=abs:1e-12 --tol Probe_Applied_DisplacementY=abs:5e-9

@@ -181,10 +181,14 @@ TEST(InputSchema, SolverChoiceIsExactlyOne) {
   auto q = base();
   q->sublist("Solver").remove("QuasiStatic");
   EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "exactly one solver sub-list");
+  // NOXQuasiStatic: its scalar options are checked, NOX's own sub-lists pass through, others are errors.
   auto r = base();
   r->sublist("Solver").remove("QuasiStatic");
-  r->sublist("Solver").sublist("NOXQuasiStatic").sublist("Anything").set("Goes", 1);
+  r->sublist("Solver").sublist("NOXQuasiStatic").set("Number of Load Steps", 2);
+  r->sublist("Solver").sublist("NOXQuasiStatic").sublist("Direction").set("Method", std::string("Newton"));
   EXPECT_NO_THROW(pf::validateInput(*r, kFile));
+  r->sublist("Solver").sublist("NOXQuasiStatic").sublist("Anything").set("Goes", 1);
+  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "unknown sub-list 'Anything'");
 }
 
 TEST(InputSchema, BoundaryConditionErrors) {

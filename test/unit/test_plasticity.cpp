@@ -173,6 +173,7 @@ TEST(ElasticPlastic, NonConvergenceThrowsConstitutiveFailure) {
       pf::osbJ2Force(fam, p, y, x, f);
     }
     void stiffnessBound(const pf::FamilyView&, double*) const override {}
+    void pairStiffness(const pf::FamilyView&, double*) const override {}
     double density() const override { return 1; }
     pf::Dimension dimension() const override { return base.dimension(); }
   } capped(p, *mat);

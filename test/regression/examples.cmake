@@ -1,0 +1,50 @@
+# Regression tests over the examples of issue 5 (examples/*/…_coarse.xml) and the Output history-column
+# options. Uses periforge_run / periforge_check from core.cmake. The coarse isotropic plate runs in
+# plate.cmake (np = 2); here the other coarse examples run and their histories are compared with np = 1
+# gold CSVs written only by scripts/regenerate_gold.
+set(EX ${PROJECT_SOURCE_DIR}/examples)
+set(EXREG ${REG}/examples)
+set(EXBIN ${CMAKE_CURRENT_BINARY_DIR}/regression)
+
+# Output options "Reaction Names" and "Applied Displacement": column names, values, and their errors.
+add_test(NAME output_history_columns
+  COMMAND ${PY} ${EXREG}/check_output_columns.py ${PERIFORGE_EXE} ${EXREG}/columns.xml)
+set_tests_properties(output_history_columns PROPERTIES LABELS "regression")
+
+# Plate with a hole, kinematic (np = 2) and mixed (np = 1) hardening, full 120-step cycle.
+# Tolerances are those of the isotropic plate (plate.cmake), measured there as np = 2 vs the np = 1 gold:
+# ADR stops each step at 1e-5 of the load norm, two partitions stop at different iterates and the plastic
+# history carries the difference along the cycle: reaction 0.56 N (of 4e4 N), stress 1.5e4 Pa (of 9e8),
+# plastic strain 8.5e-8 (of 1e-2). Bounds about 4x: 2 N, 6e4 Pa (1e-4 sigma_y), 4e-7. Applied_Displacement
+# is the deck's expression evaluated at t: exact to round-off (1e-12 m). The driven-layer probe follows the
+# prescribed u_x exactly; its u_y (free) gets 5e-9 m like the isotropic plate.
+set(plate_tols --default abs:2.0 --tol time=abs:1e-12 --tol step=abs:0 --tol Applied_Displacement=abs:1e-12
+  --tol Probe_A_Signed_Von_Mises_Stress=abs:6e4 --tol Probe_B_Signed_Von_Mises_Stress=abs:6e4
+  --tol Probe_A_Equivalent_Plastic_Strain=abs:4e-7 --tol Probe_B_Equivalent_Plastic_Strain=abs:4e-7
+  --tol Probe_Applied_DisplacementX=abs:1e-12 --tol Probe_Applied_DisplacementY=abs:5e-9
+  --tol Probe_Applied_DisplacementZ=abs:1e-12)
+foreach(case_np plate_kin_coarse:2 plate_mixed_coarse:1)
+  string(REPLACE ":" ";" cn ${case_np})
+  list(GET cn 0 case)
+  list(GET cn 1 np)
+  periforge_run(${case}_np${np} ${EX}/plate_with_hole/${case}.xml ${np})
+  periforge_check(${case}_np${np}_vs_gold ${case}_np${np}
+    ${PY} ${PROJECT_SOURCE_DIR}/scripts/compare_csv ${EXBIN}/${case}_np${np}/${case}.csv
+    ${EXREG}/${case}_gold.csv ${plate_tols})
+endforeach()
+
+# Axial bar with side notches, 120-step cycle at np = 2 against the np = 1 gold. Measured np = 2 vs np = 1
+# (max over 120 steps): axial reactions 5.7 N (of 3.3e5 N), lateral reactions 1.1 N, stress 2.6e4 Pa (of
+# 1.2e9), plastic strain 8.3e-7 (of 3e-2): the same ADR stopping-point effect as the plate. Bounds about
+# 4x: 25 N, 1e5 Pa, 3.5e-6.
+periforge_run(axial_coarse_np2 ${EX}/axial_3d/axial_coarse.xml 2)
+periforge_check(axial_coarse_np2_vs_gold axial_coarse_np2
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/compare_csv ${EXBIN}/axial_coarse_np2/axial_coarse.csv
+  ${EXREG}/axial_coarse_gold.csv --default abs:25 --tol time=abs:1e-12 --tol step=abs:0
+  --tol Applied_Displacement=abs:1e-12
+  --tol Probe_Root_Signed_Von_Mises_Stress=abs:1e5 --tol Probe_Centre_Signed_Von_Mises_Stress=abs:1e5
+  --tol Probe_Root_Equivalent_Plastic_Strain=abs:3.5e-6 --tol Probe_Centre_Equivalent_Plastic_Strain=abs:3.5e-6)
+
+# Not registered yet (issue 5, open): beam_coarse (20 ADR steps at 600-3200 iterations each, ~10 min on the
+# shared 2-core machine, over the suite's budget; no gold). Add it with scripts/regenerate_gold beam_coarse
+# once the NOXQuasiStatic solver (issue 4) makes it cheap enough, with tolerances measured np = 1 vs 2.

@@ -1,0 +1,24 @@
+# Peridigm's own regression decks (../shared/reference/peridigm, beside the checkout), run unmodified
+# and compared with Peridigm's gold Exodus files within Peridigm's .comp tolerances, at np = 1 and 2.
+# Also: the NOX solver on the 3D bar against the ADR answer.
+set(PERIDIGM_REF ${PROJECT_SOURCE_DIR}/../shared/reference/peridigm)
+if(EXISTS ${PERIDIGM_REF})
+  foreach(deck Compression_QS_3x2x2 Compression_QS_3x2x2_TextFile)
+    foreach(np 1 2)
+      periforge_run(peridigm_${deck}_np${np} ${PERIDIGM_REF}/${deck}/${deck}.xml ${np})
+      periforge_check(peridigm_${deck}_np${np}_vs_gold peridigm_${deck}_np${np}
+        ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_${deck}_np${np}/${deck}.e
+        ${PERIDIGM_REF}/${deck}/${deck}_gold.e ${PERIDIGM_REF}/${deck}/${deck}.comp)
+    endforeach()
+  endforeach()
+else()
+  message(STATUS "Peridigm reference decks not found at ${PERIDIGM_REF}: their regression tests are not registered")
+endif()
+
+periforge_run(bar_3d_nox_np2 ${REG}/bar/bar_3d_nox.xml 2)
+periforge_check(bar_3d_nox_np2_check bar_3d_nox_np2
+  ${PY} ${REG}/bar/check_bar.py ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_nox_np2/bar_3d_nox.csv
+  ${bar_3d_args} --E 200e9 --nu 0.3 --strain 1e-3)
+periforge_check(bar_3d_nox_vs_adr "bar_3d_nox_np2;bar_3d_np1"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_nox_np2/bar_3d_nox.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_np1/bar_3d.e ${REG}/bar/nox_vs_adr.comp)
