@@ -1,6 +1,5 @@
 #include "AdrSolver.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -65,37 +64,17 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
 
 void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
                     StepObserver& observer) {
-  using Clock = std::chrono::steady_clock;
-  const int n = model.numDofs();
-  const bool root = model.layout().rank() == 0;
-  std::vector<double> f(n), uStepStart(n), duPrev(n, 0.0);
-  model.applyPrescribed(t0, u.data());
-  model.internalForce(u.data(), f.data());
-  std::fill(v.begin(), v.end(), 0.0);
-  observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
-
-  const double dt = (t1 - t0) / opt_.loadSteps;
-  for (int step = 1; step <= opt_.loadSteps; ++step) {
-    auto start = Clock::now();
-    const double t = t0 + (t1 - t0) * step / opt_.loadSteps;
-    uStepStart = u;
-    predictStep(model, t, u, duPrev);
-    const StepResult res = relax(model, u, t, uStepStart);
-    model.internalForce(u.data(), f.data());  // f and trial state at the converged u
-    model.commit();
-    // Reported velocity is the load-step rate du/dt, as Peridigm's quasi-static solvers write it.
-    for (int k = 0; k < n; ++k) {
-      duPrev[k] = u[k] - uStepStart[k];
-      v[k] = duPrev[k] / dt;
-    }
-    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-    if (root) {
-      std::printf("load step %4d/%d  t = %-12.6g iterations %7d  residual %.3e (tol %.3e)  wall %.2f s\n", step,
-                  opt_.loadSteps, t, res.iterations, res.residual, res.tolerance, wall);
-      std::fflush(stdout);
-    }
-    observer.onStep(StepReport{step, t, res.iterations, res.residual, res.tolerance, wall}, u, v, f);
-  }
+  runLoadSteps(model, u, v, t0, t1, opt_.loadSteps, observer,
+               [&](std::vector<double>& u, std::vector<double>& duPrev, double, double t) {
+                 const std::vector<double> uStepStart(u);
+                 predictStep(model, t, u, duPrev);
+                 const StepResult r = relax(model, u, t, uStepStart);
+                 std::vector<double> f(u.size());
+                 model.internalForce(u.data(), f.data());  // trial state at the converged u
+                 model.commit();
+                 for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uStepStart[k];
+                 return StepStats{r.iterations, -1, r.residual, r.tolerance};
+               });
 }
 
 }  // namespace pf

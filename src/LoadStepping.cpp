@@ -1,8 +1,11 @@
 #include "LoadStepping.hpp"
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 
 #include "Model.hpp"
+#include "Solver.hpp"
 
 namespace pf {
 
@@ -40,6 +43,38 @@ void predictStep(const Model& model, double t, std::vector<double>& u, const std
   const double alpha = out[1] > 0 ? out[0] / out[1] : 0.0;
   for (std::size_t k = 0; k < u.size(); ++k)
     if (!fixed[k]) u[k] += alpha * duPrev[k];
+}
+
+void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1, int steps,
+                  StepObserver& observer,
+                  const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double)>& solveStep) {
+  using Clock = std::chrono::steady_clock;
+  const int n = model.numDofs();
+  const bool root = model.layout().rank() == 0;
+  std::vector<double> f(n), duPrev(n, 0.0);
+  model.applyPrescribed(t0, u.data());
+  model.internalForce(u.data(), f.data());
+  std::fill(v.begin(), v.end(), 0.0);
+  observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
+  const double dt = (t1 - t0) / steps;
+  for (int step = 1; step <= steps; ++step) {
+    const auto start = Clock::now();
+    const double tA = t0 + (t1 - t0) * (step - 1) / steps, tB = t0 + (t1 - t0) * step / steps;
+    const StepStats s = solveStep(u, duPrev, tA, tB);
+    model.internalForce(u.data(), f.data());  // f for output; the state is committed already
+    for (int k = 0; k < n; ++k) v[k] = duPrev[k] / dt;
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    if (root) {
+      if (s.linearIterations >= 0)
+        std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d (linear %5d)  residual %.3e (tol %.3e)  wall %.2f s\n",
+                    step, steps, tB, s.iterations, s.linearIterations, s.residual, s.tolerance, wall);
+      else
+        std::printf("load step %4d/%d  t = %-12.6g iterations %7d  residual %.3e (tol %.3e)  wall %.2f s\n", step, steps,
+                    tB, s.iterations, s.residual, s.tolerance, wall);
+      std::fflush(stdout);
+    }
+    observer.onStep(StepReport{step, tB, s.iterations, s.residual, s.tolerance, wall}, u, v, f);
+  }
 }
 
 }  // namespace pf

@@ -1,11 +1,13 @@
 #pragma once
 // Pieces shared by the quasi-static solvers (relaxation and Newton): the load-step predictor and the
 // residual measures their convergence tests use, so both judge a step the same way.
+#include <functional>
 #include <vector>
 
 namespace pf {
 
 class Model;
+class StepObserver;
 
 struct ResidualNorms {
   double residual = 0;         // || (f + b) V || over free dofs (force)
@@ -20,5 +22,20 @@ ResidualNorms residualNorms(const Model& model, const std::vector<double>& f, co
 // step's increment scaled by how the prescribed increment continues it (exact for a linear problem
 // under proportional loading; after a reversal it extrapolates backwards, as the load does).
 void predictStep(const Model& model, double t, std::vector<double>& u, const std::vector<double>& duPrev);
+
+struct StepStats {
+  int iterations = 0;
+  int linearIterations = -1;  // -1: the solver has no inner linear solve
+  double residual = 0, tolerance = 0;
+};
+
+// The quasi-static load-step loop both implicit solvers share: reports the initial state, then for each of
+// `steps` equal steps calls solveStep(u, duPrev, tA, tB), which must leave u converged at tB, the state
+// committed and duPrev = the step's increment; prints one progress line, reports the step with the
+// load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
+void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1, int steps,
+                  StepObserver& observer,
+                  const std::function<StepStats(std::vector<double>& u, std::vector<double>& duPrev, double tA,
+                                                double tB)>& solveStep);
 
 }  // namespace pf

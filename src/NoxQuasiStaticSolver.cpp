@@ -8,7 +8,6 @@
 #include <NOX_Epetra_MatrixFree.H>
 
 #include <algorithm>
-#include <chrono>
 #include <limits>
 #include <cmath>
 #include <cstdio>
@@ -224,9 +223,7 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
   return A;
 }
 
-void setDefault(Teuchos::ParameterList& l, const std::string& name, const std::string& v) {
-  if (!l.isParameter(name)) l.set(name, v);
-}
+// Teuchos stores a const char* value as std::string, so string literals work here too.
 template <class T>
 void setDefault(Teuchos::ParameterList& l, const std::string& name, T v) {
   if (!l.isParameter(name)) l.set(name, v);
@@ -352,30 +349,11 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
 
 void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
                                StepObserver& observer) {
-  using Clock = std::chrono::steady_clock;
-  const int n = model.numDofs();
-  const bool root = model.layout().rank() == 0;
-  std::vector<double> f(n), duPrev(n, 0.0);
-  model.applyPrescribed(t0, u.data());
-  model.internalForce(u.data(), f.data());
-  std::fill(v.begin(), v.end(), 0.0);
-  observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
-  const double dt = (t1 - t0) / opt_.loadSteps;
-  for (int step = 1; step <= opt_.loadSteps; ++step) {
-    auto start = Clock::now();
-    const double tA = t0 + (t1 - t0) * (step - 1) / opt_.loadSteps, tB = t0 + (t1 - t0) * step / opt_.loadSteps;
-    const std::vector<double> uA(u);
-    const Outcome o = advance(model, u, duPrev, tA, tB, 0);
-    model.internalForce(u.data(), f.data());
-    for (int k = 0; k < n; ++k) v[k] = (u[k] - uA[k]) / dt;  // load-step rate, as Peridigm writes it
-    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-    if (root) {
-      std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d (linear %5d)  residual %.3e (tol %.3e)  wall %.2f s\n",
-                  step, opt_.loadSteps, tB, o.iterations, o.linearIterations, o.residual, o.tolerance, wall);
-      std::fflush(stdout);
-    }
-    observer.onStep(StepReport{step, tB, o.iterations, o.residual, o.tolerance, wall}, u, v, f);
-  }
+  runLoadSteps(model, u, v, t0, t1, opt_.loadSteps, observer,
+               [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB) {
+                 const Outcome o = advance(model, u, duPrev, tA, tB, 0);
+                 return StepStats{o.iterations, o.linearIterations, o.residual, o.tolerance};
+               });
 }
 
 }  // namespace pf
