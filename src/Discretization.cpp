@@ -68,28 +68,19 @@ PointCloud textFile(const PL& d, const std::string& file, const std::string& dir
   const std::string path = "Discretization/Input Mesh File";
   const std::string name = getText(d, "Input Mesh File", "");
   const std::string full = resolvePath(name, dir);
-  std::ifstream in(full);
-  if (!in) fail(file, path, "cannot open mesh file '" + full + "'");
   PointCloud c;
-  std::string line;
-  int lineNo = 0;
-  while (std::getline(in, line)) {
-    ++lineNo;
-    const std::size_t hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+  forEachDataLine(full, file, path, "mesh", [&](const std::string& line, const std::string& where) {
     std::istringstream ss(line);
     double x, y, z, v;
     long b;
     std::string extra;
-    const std::string where = full + ":" + std::to_string(lineNo);
     if (!(ss >> x >> y >> z >> b >> v) || (ss >> extra))
       fail(file, path, where + ": expected 'x y z block_id volume', got '" + line + "'");
     if (b < 1) fail(file, path, where + ": block_id must be a positive integer (got " + std::to_string(b) + ")");
     if (!(v > 0.0) || !std::isfinite(v)) fail(file, path, where + ": volume must be positive (got " + num(v) + ")");
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) fail(file, path, where + ": non-finite coordinate");
     pushPoint(c, x, y, z, v, static_cast<int>(b));
-  }
+  });
   if (c.size() == 0) fail(file, path, "mesh file '" + full + "' holds no points");
   return c;
 }
@@ -229,6 +220,22 @@ PointCloud generator(const PL& d, const std::string& file, double defaultLayerWi
 }
 
 }  // namespace
+
+void forEachDataLine(const std::string& full, const std::string& inputFile, const std::string& path,
+                     const std::string& what,
+                     const std::function<void(const std::string& text, const std::string& where)>& use) {
+  std::ifstream in(full);
+  if (!in) fail(inputFile, path, "cannot open " + what + " file '" + full + "'");
+  std::string line;
+  int lineNo = 0;
+  while (std::getline(in, line)) {
+    ++lineNo;
+    const std::size_t hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    use(line, full + ":" + std::to_string(lineNo));
+  }
+}
 
 std::string resolvePath(const std::string& name, const std::string& inputDir) {
   if (name.empty() || name[0] == '/' || inputDir.empty() || inputDir == ".") return name;

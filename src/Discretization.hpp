@@ -2,6 +2,7 @@
 // Builds the point cloud from the "Discretization" list: Peridigm's PdQuickGrid and Text File, and
 // Periforge's "Rectangle With Holes" (2D) and "Box With Holes" (3D) generators with optional fictitious
 // boundary layers. Every rank builds the same cloud in the same order; bad files are InputErrors.
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -33,5 +34,12 @@ PointCloud buildDiscretization(const Teuchos::ParameterList& discretization, con
 
 // A deck-relative file name made usable from the working directory.
 std::string resolvePath(const std::string& name, const std::string& inputDir);
+
+// Reads a data file (mesh or node-set ids): calls use(text, where) for every line that is not blank
+// once '#' comments are cut, where = "full:line". A file that cannot be opened is an InputError
+// "inputFile: path: cannot open <what> file 'full'".
+void forEachDataLine(const std::string& full, const std::string& inputFile, const std::string& path,
+                     const std::string& what,
+                     const std::function<void(const std::string& text, const std::string& where)>& use);
 
 }  // namespace pf

@@ -115,19 +115,12 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const PL& bcs, const Poi
       if (allIntegers(words)) {
         ids = idsToIndices(words, cloud.size(), inputFile, path, "");
       } else {
-        const std::string full = resolvePath(text, inputDir);
-        std::ifstream in(full);
-        if (!in) fail(inputFile, path, "cannot open node set file '" + full + "'");
-        std::string line;
-        int lineNo = 0;
-        while (std::getline(in, line)) {
-          ++lineNo;
-          const std::size_t hash = line.find('#');
-          if (hash != std::string::npos) line.erase(hash);
-          const std::vector<int> more =
-              idsToIndices(splitWords(line), cloud.size(), inputFile, path, full + ":" + std::to_string(lineNo) + ": ");
-          ids.insert(ids.end(), more.begin(), more.end());
-        }
+        forEachDataLine(resolvePath(text, inputDir), inputFile, path, "node set",
+                        [&](const std::string& line, const std::string& where) {
+                          const std::vector<int> more =
+                              idsToIndices(splitWords(line), cloud.size(), inputFile, path, where + ": ");
+                          ids.insert(ids.end(), more.begin(), more.end());
+                        });
       }
     }
     if (sets.count(name)) fail(inputFile, path, "node set name clashes with a generated or built-in node set");
