@@ -142,43 +142,39 @@ void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double*
 void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, const double* y, const double* dy,
                                double* dforce) {
   const double* V = fam.volume;
+  osb::FamilyScratch& sc = osb::familyScratch(fam);
   for (int i = fam.begin; i < fam.end; ++i) {
+    const int nb = osb::gatherFamily(fam, y, i, sc);
+    const int off = fam.offsets[i];
+    const int* nbr = fam.neighbors + off;
+    const double* x = fam.refLength + off;
+    const double* w = fam.influence + off;
     const double invm = 1.0 / fam.weightedVolume[i];
-    // theta and its derivative first: t depends on the whole family through them.
+    // theta and its derivative first: t depends on the whole family through them. sc.a = de = M . dY.
     double theta = 0.0, dtheta = 0.0;
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-      const int j = fam.neighbors[b];
-      double d[3], dd[3];
-      for (int a = 0; a < 3; ++a) {
-        d[a] = y[3 * j + a] - y[3 * i + a];
-        dd[a] = dy[3 * j + a] - dy[3 * i + a];
-      }
-      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      const double x = fam.refLength[b];
-      const double w = fam.influence[b] * x * V[j];
-      theta += w * (len - x);
-      dtheta += w * (d[0] * dd[0] + d[1] * dd[1] + d[2] * dd[2]) / len;
+    for (int k = 0; k < nb; ++k) {
+      const int j = nbr[k];
+      const double dd0 = dy[3 * j] - dy[3 * i], dd1 = dy[3 * j + 1] - dy[3 * i + 1], dd2 = dy[3 * j + 2] - dy[3 * i + 2];
+      sc.a[k] = (sc.d0[k] * dd0 + sc.d1[k] * dd1 + sc.d2[k] * dd2) / sc.len[k];
+      const double wx = w[k] * x[k] * sc.vj[k];
+      theta += wx * (sc.len[k] - x[k]);
+      dtheta += wx * sc.a[k];
     }
     theta *= c.k * c.D * invm;
     dtheta *= c.k * c.D * invm;
     const double iso = (c.A - c.B * c.c) * invm, dev = c.B * invm;
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-      const int j = fam.neighbors[b];
-      double d[3], dd[3];
-      for (int a = 0; a < 3; ++a) {
-        d[a] = y[3 * j + a] - y[3 * i + a];
-        dd[a] = dy[3 * j + a] - dy[3 * i + a];
-      }
-      const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-      const double x = fam.refLength[b], w = fam.influence[b];
-      const double M[3] = {d[0] / len, d[1] / len, d[2] / len};
-      const double de = M[0] * dd[0] + M[1] * dd[1] + M[2] * dd[2];
-      const double t = w * (iso * theta * x + dev * (len - x));
-      const double dt = w * (iso * dtheta * x + dev * de);
-      for (int a = 0; a < 3; ++a) {
-        const double dT = dt * M[a] + t * (dd[a] - M[a] * de) / len;
-        dforce[3 * i + a] += dT * V[j];
-        dforce[3 * j + a] -= dT * V[i];
+    for (int k = 0; k < nb; ++k) {
+      const int j = nbr[k];
+      const double dd[3] = {dy[3 * j] - dy[3 * i], dy[3 * j + 1] - dy[3 * i + 1], dy[3 * j + 2] - dy[3 * i + 2]};
+      const double len = sc.len[k], de = sc.a[k];
+      const double M[3] = {sc.d0[k] / len, sc.d1[k] / len, sc.d2[k] / len};
+      const double t = w[k] * (iso * theta * x[k] + dev * (len - x[k]));
+      const double dt = w[k] * (iso * dtheta * x[k] + dev * de);
+      // d(t M) = dt M + t (I - M M^T) dY / |Y|
+      for (int e = 0; e < 3; ++e) {
+        const double dT = dt * M[e] + t * (dd[e] - M[e] * de) / len;
+        dforce[3 * i + e] += dT * sc.vj[k];
+        dforce[3 * j + e] -= dT * V[i];
       }
     }
   }
