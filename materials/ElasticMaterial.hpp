@@ -16,6 +16,7 @@ class ElasticMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
+  bool hasForceDerivative() const override { return true; }
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
   double density() const override { return density_; }

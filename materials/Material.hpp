@@ -37,8 +37,9 @@ class Material {
 
   // The exact directional derivative of computeForce at deformed positions y along dy (3 per overlap
   // node): adds dF to dforce with the same two-ended accumulation. Reads the committed state (the
-  // linearisation point of an elastic step). Returns false if the model has no exact tangent; the
-  // implicit solver then differentiates the residual numerically.
+  // linearisation point of an elastic step). Only called when hasForceDerivative(); models without an
+  // exact tangent leave both alone and the implicit solver differentiates the residual numerically.
+  virtual bool hasForceDerivative() const { return false; }
   virtual bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                                double* dforce) const {
     return false;
