@@ -68,9 +68,8 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
                [&](std::vector<double>& u, std::vector<double>& duPrev, double, double t) {
                  const std::vector<double> uStepStart(u);
                  predictStep(model, t, u, duPrev);
+                 // relax's last force evaluation was at the converged u, so the trial state is that of u
                  const StepResult r = relax(model, u, t, uStepStart);
-                 std::vector<double> f(u.size());
-                 model.internalForce(u.data(), f.data());  // trial state at the converged u
                  model.commit();
                  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uStepStart[k];
                  return StepStats{r.iterations, -1, r.residual, r.tolerance};
