@@ -51,6 +51,12 @@ struct PathResult {
   double alphaErr = 0;   // max |alpha_pd - alpha_cl| / max alpha_cl
   double onsetErr = 0;   // |eps_y,pd / eps_y,cl - 1|
   double stressErr = 0;  // max in-plane |sigma_pd - sigma_cl| component / sigma_y (information)
+  // Plane stress only (else -1): the same von Mises / alpha errors against the classical model with the
+  // PD model's *scalar* back stress (PlaneStressJ2::Kinematic::Scalar) -- the model's own classical
+  // counterpart. Equal to vmErr/alphaErr for H = 0; differs from them only by the scalar-vs-tensor back
+  // stress (model form) for H > 0.
+  double vmErrScalar = -1, alphaErrScalar = -1;
+  int vmErrStep = 0;     // step of the largest von Mises error (against ClassicalJ2)
   int maxIterations = 0;
   int reverseYieldStepPd = -1, reverseYieldStepCl = -1;  // first plastic step after the first reversal
   std::vector<double> strain, vm, svm, alpha, lambda, q;  // per step, peridynamic
@@ -64,8 +70,11 @@ inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, 
                                  : dim == pf::Dimension::PlaneStress ? ClassicalJ2::Mode::PlaneStress
                                                                     : ClassicalJ2::Mode::PlaneStrain;
   ClassicalJ2 cl(kE, kNu, kSy, K, H, mode);
+  PlaneStressJ2 sc = PlaneStressJ2::isotropic(kE, kNu, kSy, K, H, PlaneStressJ2::Kinematic::Scalar);
+  const bool withScalar = dim == pf::Dimension::PlaneStress;
   PathResult r;
-  double alphaMax = 0, alphaPrevPd = 0, alphaPrevCl = 0;
+  if (withScalar) r.vmErrScalar = r.alphaErrScalar = 0;
+  double alphaMax = 0, alphaMaxSc = 0, alphaPrevPd = 0, alphaPrevCl = 0;
   bool reversed = false;
   for (int k = 1; k <= steps; ++k) {
     const double s = pathStrain(path, k, steps, amp);
@@ -78,7 +87,14 @@ inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, 
     cl.update(e);
     const double vm = mp.value("Von_Mises_Stress"), al = mp.value("Equivalent_Plastic_Strain");
     if (k == 1) r.onsetErr = std::fabs(cl.vonMises() / vm - 1.0);  // elastic first step: eps_y ~ 1/vm
-    r.vmErr = std::max(r.vmErr, std::fabs(vm - cl.vonMises()) / kSy);
+    if (std::fabs(vm - cl.vonMises()) / kSy > r.vmErr) { r.vmErr = std::fabs(vm - cl.vonMises()) / kSy; r.vmErrStep = k; }
+    if (withScalar) {
+      sc.update(e);
+      r.vmErrScalar = std::max(r.vmErrScalar, std::fabs(vm - sc.vonMises()) / kSy);
+      r.alphaErrScalar = std::max(r.alphaErrScalar, std::fabs(al - sc.alphaT));
+      alphaMaxSc = std::max(alphaMaxSc, sc.alphaT);
+      sc.commit();
+    }
     alphaMax = std::max(alphaMax, cl.alphaT);
     r.alphaErr = std::max(r.alphaErr, std::fabs(al - cl.alphaT));
     const std::array<double, 9> sg = mp.stress();
@@ -95,6 +111,7 @@ inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, 
     cl.commit();
   }
   r.alphaErr = alphaMax > 0 ? r.alphaErr / alphaMax : r.alphaErr;
+  if (withScalar && alphaMaxSc > 0) r.alphaErrScalar /= alphaMaxSc;
   return r;
 }
 
