@@ -1,9 +1,10 @@
 #pragma once
-// Implicit quasi-static load steps by NOX's line-search Newton method with a Jacobian-free Krylov solve:
-// J v is NOX's finite-difference directional derivative of the residual (so every material, plastic
-// ones included, gets its consistent tangent without writing one), preconditioned by Ifpack/ML on the
-// assembled pair stiffness (each bond's extension term, elastic moduli). A step that fails is cut in
-// halves up to Maximum Cuts times; a step still failing is relaxed by ADR, and the fallback is logged.
+// Implicit quasi-static load steps by NOX's line-search Newton method with a Jacobian-free Krylov solve
+// (inexact: each solve asks for the reduction the force test still needs). J v is the material's exact
+// derivative where it has one, else a finite difference of the force, so plastic models get their
+// consistent tangent without writing one. The preconditioner (Ifpack ILU or ML) of the assembled pair
+// stiffness is built once per run. A step that fails is cut in halves up to Maximum Cuts times; a step
+// still failing is relaxed by ADR, and the fallback is logged.
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
 #include <Teuchos_ParameterList.hpp>
@@ -45,6 +46,7 @@ class NoxQuasiStaticSolver : public Solver {
   NoxOptions opt_;
   Teuchos::RCP<Epetra_Map> map_;       // owned dofs, global id 3 * point + component
   Teuchos::RCP<Epetra_CrsMatrix> M_;   // preconditioner matrix (pair stiffness), built on first use
+  Teuchos::RCP<Epetra_Operator> prec_; // its Ifpack or ML preconditioner, built once for the whole run
   double scale_ = 1.0;                 // its mean diagonal: the weight of the prescribed rows
 };
 
