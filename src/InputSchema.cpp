@@ -360,7 +360,8 @@ void validateSolver(const PL& s, const std::string& file) {
               {{"Number of Load Steps", T::Int, true}, {"Absolute Tolerance", T::Double, false},
                {"Relative Tolerance", T::Double, false}, {"Maximum Solver Iterations", T::Int, false},
                {"Max Solver Iterations", T::Int, false}, {"Maximum Load Step Cuts", T::Int, false},
-               {"Verbose", T::Bool, false}, {"Nonlinear Solver", T::String, false}},
+               {"Verbose", T::Bool, false}, {"Nonlinear Solver", T::String, false},
+               {"Preconditioner Bond Radius", T::Double, false}},
               {"Direction", "Line Search", "Printing", "Solver Options"});
     atLeastOne(q, "Number of Load Steps", file, np);
     atLeastOne(q, "Maximum Solver Iterations", file, np);

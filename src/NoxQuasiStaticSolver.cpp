@@ -183,7 +183,8 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
 
 // The preconditioner matrix: each bond's extension stiffness c V_j n n^T between its two nodes (the
 // reverse bond's c taken as c m_i/m_j), prescribed rows replaced by s on the diagonal.
-Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& map, double* scaleOut) {
+Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& map, double radiusFactor,
+                                          double* scaleOut) {
   const DistributedLayout& L = model.layout();
   const BondFamily& fam = L.family();
   const std::vector<int>& gid = L.gids();
@@ -192,7 +193,26 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
   const std::vector<double>& m = model.weightedVolume();
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double> c = model.pairStiffness();
-  std::vector<double> diagSum(3 * model.numOwned(), 0.0);
+  // Which bonds the matrix keeps, and one global stiffening factor so that the kept bonds carry the
+  // second moment sum(k r^2) of all bonds: the smooth modes, which the Krylov solve needs the
+  // preconditioner for, see the same stiffness.
+  std::vector<char> keep(fam.neighbors.size(), 1);
+  double boost = 1.0;
+  {
+    double moment[2] = {0, 0}, total[2];
+    for (int i = 0; i < model.numOwned(); ++i) {
+      double shortest = std::numeric_limits<double>::max();
+      for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) shortest = std::min(shortest, fam.refLength[b]);
+      for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+        const double r = fam.refLength[b], kr2 = c[b] * V[fam.neighbors[b]] * r * r;
+        keep[b] = r <= radiusFactor * shortest * (1 + 1e-9);
+        moment[0] += kr2;
+        if (keep[b]) moment[1] += kr2;
+      }
+    }
+    L.comm().SumAll(moment, total, 2);
+    boost = total[1] > 0 ? total[0] / total[1] : 1.0;
+  }
   auto A = Teuchos::rcp(new Epetra_CrsMatrix(Copy, map, 0));
   std::vector<int> cols;
   std::vector<double> vals;
@@ -204,10 +224,11 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
       cols.assign({3 * gid[i], 3 * gid[i] + 1, 3 * gid[i] + 2});
       vals.assign(3, 0.0);
       for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+        if (!keep[b]) continue;
         const int j = fam.neighbors[b];
         double n[3];
         for (int d = 0; d < 3; ++d) n[d] = (x[3 * j + d] - x[3 * i + d]) / fam.refLength[b];
-        const double k = c[b] * (1.0 + m[i] / m[j]) * V[j];
+        const double k = boost * c[b] * (1.0 + m[i] / m[j]) * V[j];
         for (int d = 0; d < 3; ++d) {
           if (n[a] * n[d] == 0.0) continue;  // planar bonds: no z coupling; storing zeros doubled the work
           vals[d] += k * n[a] * n[d];
@@ -279,7 +300,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
     for (int i = 0; i < model.numOwned(); ++i)
       for (int a = 0; a < 3; ++a) dofGids[3 * i + a] = 3 * model.layout().gids()[i] + a;
     map_ = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm()));
-    M_ = pairMatrix(model, *map_, &scale_);
+    M_ = pairMatrix(model, *map_, opt_.precBondRadius, &scale_);
   }
   const Epetra_Map& map = *map_;
   const double scale = scale_;

@@ -47,6 +47,8 @@ std::unique_ptr<Solver> makeSolver(const Teuchos::ParameterList& s, const std::s
     o.maxIterations = get<int>(l, "Maximum Solver Iterations", get<int>(l, "Max Solver Iterations", o.maxIterations));
     o.maxCuts = get<int>(l, "Maximum Load Step Cuts", o.maxCuts);
     o.verbose = get<bool>(l, "Verbose", false);
+    o.precBondRadius = get<double>(l, "Preconditioner Bond Radius", o.precBondRadius);
+    if (!(o.precBondRadius >= 1)) throw InputError(lw + ": 'Preconditioner Bond Radius' must be at least 1");
     if (o.relativeTolerance < 0 || o.absoluteTolerance < 0) throw InputError(lw + ": tolerances must not be negative");
     if (o.maxIterations < 1) throw InputError(lw + ": 'Maximum Solver Iterations' must be at least 1");
     if (o.maxCuts < 0) throw InputError(lw + ": 'Maximum Load Step Cuts' must not be negative");
