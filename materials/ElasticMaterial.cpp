@@ -19,9 +19,7 @@ std::vector<StateSpec> ElasticMaterial::stateSpecs() const {
 
 void ElasticMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                    double* force) const {
-  double* theta = state.trial("Dilatation");
-  osbDilatation(fam, osb_, y, nullptr, theta);
-  osbElasticForce(fam, osb_, y, theta, force);
+  osbElasticDilatationAndForce(fam, osb_, y, state.trial("Dilatation"), force);
 }
 
 void ElasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {

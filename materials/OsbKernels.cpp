@@ -1,141 +1,92 @@
 #include "OsbKernels.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <vector>
-#ifdef __SSE2__
-#include <emmintrin.h>
-#endif
+
+#include "OsbBondLoops.hpp"
 
 namespace pf {
 
 namespace osb {
 
 FamilyScratch& familyScratch(const FamilyView& fam) {
+  constexpr std::size_t kArrays = 9;
   thread_local std::vector<double> buf;
   thread_local FamilyScratch s;
   int nmax = 0;
   for (int i = fam.begin; i < fam.end; ++i) nmax = std::max(nmax, fam.offsets[i + 1] - fam.offsets[i]);
-  const std::size_t n = static_cast<std::size_t>(nmax);
-  if (buf.size() < 7 * n || !s.d0) {
-    buf.assign(7 * n, 0.0);
+  // Each array starts on a 64-byte line (a multiple of 8 doubles apart, buffer aligned below).
+  const std::size_t n = (static_cast<std::size_t>(nmax) + 7) / 8 * 8;
+  if (buf.size() < kArrays * n + 8 || !s.d0) {
+    buf.assign(kArrays * n + 8, 0.0);
     double* p = buf.data();
-    s.d0 = p; s.d1 = p + n; s.d2 = p + 2 * n; s.len = p + 3 * n; s.vj = p + 4 * n; s.a = p + 5 * n; s.b = p + 6 * n;
+    while (reinterpret_cast<std::uintptr_t>(p) % 64 != 0) ++p;
+    double** arrays[kArrays] = {&s.d0, &s.d1, &s.d2, &s.len, &s.vj, &s.a, &s.g0, &s.g1, &s.g2};
+    for (std::size_t k = 0; k < kArrays; ++k) *arrays[k] = p + k * n;
   }
   return s;
 }
 
-int gatherFamily(const FamilyView& fam, const double* __restrict y, int i, FamilyScratch& sc) {
-  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-  const int* __restrict nb = fam.neighbors + b0;
-  const double* __restrict V = fam.volume;
-  double* __restrict d0 = sc.d0;
-  double* __restrict d1 = sc.d1;
-  double* __restrict d2 = sc.d2;
-  double* __restrict len = sc.len;
-  double* __restrict vj = sc.vj;
-  const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-  for (int k = 0; k < n; ++k) {
-    const int j = nb[k];
-    d0[k] = y[3 * j] - yi0; d1[k] = y[3 * j + 1] - yi1; d2[k] = y[3 * j + 2] - yi2;
-    vj[k] = V[j];
-  }
-  int k = 0;
-#ifdef __SSE2__
-  // Two lengths at a time: sqrtpd rounds exactly as sqrtsd (std::sqrt alone does not vectorize: errno).
-  for (; k + 2 <= n; k += 2) {
-    const __m128d a = _mm_loadu_pd(d0 + k), b = _mm_loadu_pd(d1 + k), c = _mm_loadu_pd(d2 + k);
-    const __m128d sq = _mm_add_pd(_mm_add_pd(_mm_mul_pd(a, a), _mm_mul_pd(b, b)), _mm_mul_pd(c, c));
-    _mm_storeu_pd(len + k, _mm_sqrt_pd(sq));
-  }
-#endif
-  for (; k < n; ++k) len[k] = std::sqrt(d0[k] * d0[k] + d1[k] * d1[k] + d2[k] * d2[k]);
-  return n;
-}
-
-double dilatationSum(const double* __restrict w, const double* __restrict x, const double* __restrict len,
-                     const double* __restrict ep, const double* __restrict vj, int n) {
-  double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
-  int k = 0;
-  if (ep) {
-    for (; k + 4 <= n; k += 4) {
-      s0 += w[k] * x[k] * ((len[k] - x[k]) - ep[k]) * vj[k];
-      s1 += w[k + 1] * x[k + 1] * ((len[k + 1] - x[k + 1]) - ep[k + 1]) * vj[k + 1];
-      s2 += w[k + 2] * x[k + 2] * ((len[k + 2] - x[k + 2]) - ep[k + 2]) * vj[k + 2];
-      s3 += w[k + 3] * x[k + 3] * ((len[k + 3] - x[k + 3]) - ep[k + 3]) * vj[k + 3];
-    }
-    for (; k < n; ++k) s0 += w[k] * x[k] * ((len[k] - x[k]) - ep[k]) * vj[k];
-  } else {
-    for (; k + 4 <= n; k += 4) {
-      s0 += w[k] * x[k] * (len[k] - x[k]) * vj[k];
-      s1 += w[k + 1] * x[k + 1] * (len[k + 1] - x[k + 1]) * vj[k + 1];
-      s2 += w[k + 2] * x[k + 2] * (len[k + 2] - x[k + 2]) * vj[k + 2];
-      s3 += w[k + 3] * x[k + 3] * (len[k + 3] - x[k + 3]) * vj[k + 3];
-    }
-    for (; k < n; ++k) s0 += w[k] * x[k] * (len[k] - x[k]) * vj[k];
-  }
-  return (s0 + s1) + (s2 + s3);
-}
-
-void addBondForces(const FamilyView& fam, int i, const FamilyScratch& sc, const double* __restrict s,
-                   double* __restrict force) {
-  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-  const int* __restrict nb = fam.neighbors + b0;
-  const double* __restrict d0 = sc.d0;
-  const double* __restrict d1 = sc.d1;
-  const double* __restrict d2 = sc.d2;
-  const double* __restrict vj = sc.vj;
-  const double Vi = fam.volume[i];
-  // f_i: two interleaved partial sums per component; f_j: scattered as they come.
-  double a0 = 0, a1 = 0, a2 = 0, c0 = 0, c1 = 0, c2 = 0;
-  int k = 0;
-  for (; k + 2 <= n; k += 2) {
-    const double g0 = s[k] * d0[k], g1 = s[k] * d1[k], g2 = s[k] * d2[k];
-    const double h0 = s[k + 1] * d0[k + 1], h1 = s[k + 1] * d1[k + 1], h2 = s[k + 1] * d2[k + 1];
-    a0 += g0 * vj[k]; a1 += g1 * vj[k]; a2 += g2 * vj[k];
-    c0 += h0 * vj[k + 1]; c1 += h1 * vj[k + 1]; c2 += h2 * vj[k + 1];
-    double* fj = force + 3 * nb[k];
-    fj[0] -= g0 * Vi; fj[1] -= g1 * Vi; fj[2] -= g2 * Vi;
-    double* fk = force + 3 * nb[k + 1];
-    fk[0] -= h0 * Vi; fk[1] -= h1 * Vi; fk[2] -= h2 * Vi;
-  }
-  for (; k < n; ++k) {
-    const double g0 = s[k] * d0[k], g1 = s[k] * d1[k], g2 = s[k] * d2[k];
-    a0 += g0 * vj[k]; a1 += g1 * vj[k]; a2 += g2 * vj[k];
-    double* fj = force + 3 * nb[k];
-    fj[0] -= g0 * Vi; fj[1] -= g1 * Vi; fj[2] -= g2 * Vi;
-  }
-  force[3 * i] += a0 + c0; force[3 * i + 1] += a1 + c1; force[3 * i + 2] += a2 + c2;
-}
-
 }  // namespace osb
 
-void osbDilatation(const FamilyView& fam, const OsbConstants& c, const double* y, const double* edp,
-                   double* theta) {
+namespace {
+
+// theta_i = k (D/m_i) sum_j omega x (e - e^dp) V_j (Eqs. 4/16), from a gathered family.
+PF_INLINE double nodeDilatation(const FamilyView& fam, const OsbConstants& c, int i, const osb::FamilyScratch& sc,
+                                const double* ep, int n) {
+  const int b0 = fam.offsets[i];
+  const double sum =
+      osb::dilatationSum(fam.influence + b0, fam.refLength + b0, sc.len, ep, sc.vj, n, osb::chunksStayInBlock(fam, i));
+  return c.k * c.D * sum / fam.weightedVolume[i];
+}
+
+// Adds node i's elastic bond forces (Eqs. 7-13) from its gathered family and its dilatation.
+PF_INLINE void addNodeElasticForce(const FamilyView& fam, const OsbConstants& c, int i, const osb::FamilyScratch& sc,
+                                   double theta, int n, double* force) {
+  const int b0 = fam.offsets[i];
+  const double* __restrict xr = fam.refLength + b0;
+  const double* __restrict w = fam.influence + b0;
+  const double* __restrict len = sc.len;
+  const double invm = 1.0 / fam.weightedVolume[i];
+  const double iso = (c.A - c.B * c.c) * theta * invm;  // coefficient of omega x
+  const double dev = c.B * invm;                        // coefficient of omega e
+  // t = omega (iso x + dev e) along the deformed bond: s = t / |y_j - y_i|
+  auto forceOverLength = [&](int k, auto ch) {
+    const osb::Lanes x = ch.load(xr + k), l = ch.load(len + k, 1.0);
+    return ch.load(w + k) * (iso * x + dev * (l - x)) / l;
+  };
+  osb::addBondForces(fam, i, sc, osb::chunksStayInBlock(fam, i), forceOverLength, force);
+}
+
+}  // namespace
+
+PF_KERNEL_CLONES void osbDilatation(const FamilyView& fam, const OsbConstants& c, const double* y, const double* edp,
+                                    double* theta) {
   osb::FamilyScratch& sc = osb::familyScratch(fam);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const int b0 = fam.offsets[i], n = osb::gatherFamily(fam, y, i, sc);
-    const double sum = osb::dilatationSum(fam.influence + b0, fam.refLength + b0, sc.len, edp ? edp + b0 : nullptr,
-                                          sc.vj, n);
-    theta[i] = c.k * c.D * sum / fam.weightedVolume[i];
+    const int n = osb::gatherFamily(fam, y, i, sc);
+    theta[i] = nodeDilatation(fam, c, i, sc, edp ? edp + fam.offsets[i] : nullptr, n);
   }
 }
 
-void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double* y, const double* theta,
-                     double* force) {
+PF_KERNEL_CLONES void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double* y,
+                                      const double* theta, double* force) {
   osb::FamilyScratch& sc = osb::familyScratch(fam);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const int b0 = fam.offsets[i], n = osb::gatherFamily(fam, y, i, sc);
-    const double* __restrict xr = fam.refLength + b0;
-    const double* __restrict w = fam.influence + b0;
-    const double* __restrict len = sc.len;
-    double* __restrict s = sc.a;
-    const double invm = 1.0 / fam.weightedVolume[i];
-    const double iso = (c.A - c.B * c.c) * theta[i] * invm;  // coefficient of omega x
-    const double dev = c.B * invm;                          // coefficient of omega e
-    // t = omega (iso x + dev e) along the deformed bond: s = t / |y_j - y_i| (vectorizes: divpd)
-    for (int k = 0; k < n; ++k) s[k] = w[k] * (iso * xr[k] + dev * (len[k] - xr[k])) / len[k];
-    osb::addBondForces(fam, i, sc, s, force);
+    const int n = osb::gatherFamily(fam, y, i, sc);
+    addNodeElasticForce(fam, c, i, sc, theta[i], n, force);
+  }
+}
+
+PF_KERNEL_CLONES void osbElasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const double* y,
+                                                   double* theta, double* force) {
+  osb::FamilyScratch& sc = osb::familyScratch(fam);
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const int n = osb::gatherFamily(fam, y, i, sc);
+    theta[i] = nodeDilatation(fam, c, i, sc, nullptr, n);
+    addNodeElasticForce(fam, c, i, sc, theta[i], n, force);
   }
 }
 

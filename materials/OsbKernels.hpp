@@ -1,6 +1,7 @@
 #pragma once
 // Plain bond loops of the linear ordinary state-based solid (see OsbConstants.hpp for the equations).
-// They stream the CSR bond arrays once per pass and allocate nothing; materials compose them.
+// They stream the CSR bond arrays once per pass and allocate nothing; materials compose them. The
+// shared per-node building blocks are in OsbBondLoops.hpp.
 #include "BondFamily.hpp"
 #include "OsbConstants.hpp"
 
@@ -16,6 +17,11 @@ void osbDilatation(const FamilyView& fam, const OsbConstants& c, const double* y
 void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double* y, const double* theta,
                      double* force);
 
+// osbDilatation (edp null) and osbElasticForce in one pass over the bonds: t_ij needs only theta_i, so
+// each family is gathered once and its force added while it is in L1. Same arithmetic, same results.
+void osbElasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const double* y, double* theta,
+                                  double* force);
+
 // Upper bound of sum_j |dF_i/du_j| of the elastic force for owned i in [begin, end), from the two
 // terms of t (direct extension and dilatation coupling), both ends of each bond counted.
 void osbStiffnessBound(const FamilyView& fam, const OsbConstants& c, double* bound);
@@ -27,37 +33,5 @@ void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, con
 
 // c_b = B omega_b / m_i: stiffness of the deviatoric/extension term of t per unit extension.
 void osbPairStiffness(const FamilyView& fam, const OsbConstants& c, double* stiffness);
-
-// Building blocks of the bond loops, shared by the elastic and the J2 kernels so that both do the same
-// arithmetic (an elastic J2 point gives exactly the "Elastic" force). A node's family is first gathered
-// into a per-node scratch (bond vectors, deformed lengths, neighbour volumes: ~7 kB for 120 bonds, so it
-// stays in L1) and every later loop of that node runs on contiguous arrays: one sqrt per bond and step,
-// loops the compiler vectorizes, no allocation or virtual call per bond.
-namespace osb {
-
-struct FamilyScratch {
-  double *d0 = nullptr, *d1 = nullptr, *d2 = nullptr;  // y_j - y_i
-  double *len = nullptr;                               // |y_j - y_i|
-  double *vj = nullptr;                                // V_j
-  double *a = nullptr, *b = nullptr;                   // per-bond work arrays of the caller
-};
-
-// Thread-local scratch for families of up to the largest family of [fam.begin, fam.end); grown, never
-// shrunk (one allocation per thread and size, not per call).
-FamilyScratch& familyScratch(const FamilyView& fam);
-
-// Gathers node i's family into the scratch; returns its size.
-int gatherFamily(const FamilyView& fam, const double* y, int i, FamilyScratch& s);
-
-// sum_k omega_k x_k (len_k - x_k - ep_k) V_k over the family (ep null: no plastic extension), in four
-// interleaved partial sums (a fixed order, so the result depends only on the family's bond order).
-double dilatationSum(const double* w, const double* x, const double* len, const double* ep, const double* vj,
-                     int n);
-
-// With s[k] = t_k / len_k (the scalar force state over the deformed length) in the scratch: f_i += t V_j
-// along each bond, f_j -= t V_i.
-void addBondForces(const FamilyView& fam, int i, const FamilyScratch& sc, const double* s, double* force);
-
-}  // namespace osb
 
 }  // namespace pf

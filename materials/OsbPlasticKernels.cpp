@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "Material.hpp"
-#include "OsbKernels.hpp"
+#include "OsbBondLoops.hpp"
 
 namespace pf {
 
@@ -27,10 +27,51 @@ YieldConstants yieldConstants(Dimension dim, double my) {
   return {4.0 / (3.0 * my), 16.0 / (3.0 * my), 2.5 / my};
 }
 
+// Moments of the trial deviatoric force state over the family (Eqs. 31, 40-41): |t|^2, t.x, the third
+// moment and its absolute value (sign of sigma_vm), x.x.
+struct TrialMoments {
+  double S2, Sx, S3, A3, Xx;
+};
+
+// Writes the trial deviatoric force state t^d_tr = omega bm (e - c theta_tr x - e^dp_n) (Eqs. 40-41) to
+// tdv and returns its moments, bond k in partial sum k mod kLanes.
+PF_INLINE TrialMoments trialDeviatoricState(const double* __restrict w, const double* __restrict xr,
+                                            const double* __restrict len, const double* __restrict epN,
+                                            const double* __restrict vj, double bm, double cth, int n,
+                                            bool inBlock, double* __restrict tdv) {
+  osb::Lanes S2 = {}, Sx = {}, S3 = {}, A3 = {}, Xx = {};
+  osb::forEachChunk(n, inBlock, [&](int k, auto c) {
+    const osb::Lanes x = c.load(xr + k), v = c.load(vj + k);
+    const osb::Lanes td = c.load(w + k) * bm * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
+    const osb::Lanes tv = td * v;
+    c.store(tdv + k, td);
+    S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += (td < 0 ? -td : td) * td * tv; Xx += x * x * v;
+  });
+  return {osb::laneSum(S2), osb::laneSum(Sx), osb::laneSum(S3), osb::laneSum(A3), osb::laneSum(Xx)};
+}
+
+// e^dp_n+1 = e^dp_n + a1 (t^d - pp x) + a2 x (Eqs. 52, 58: the returned t_perp and pp x scaled by
+// dlambda and phi), written to ep; returns the dilatation sum over the new e^dp (Eq. 16), in the order
+// of osb::dilatationSum.
+PF_INLINE double updatePlasticExtension(const double* __restrict w, const double* __restrict xr,
+                                        const double* __restrict len, const double* __restrict epN,
+                                        const double* __restrict vj, const double* __restrict tdv, double a1,
+                                        double a2, double pp, int n, bool inBlock,
+                                        double* __restrict ep) {
+  osb::Lanes acc = {};
+  osb::forEachChunk(n, inBlock, [&](int k, auto c) {
+    const osb::Lanes x = c.load(xr + k);
+    const osb::Lanes e = c.load(epN + k) + a1 * (c.load(tdv + k) - pp * x) + a2 * x;
+    c.store(ep + k, e);
+    acc += osb::dilatationTerm(c.load(w + k), x, c.load(len + k), e, c.load(vj + k));
+  });
+  return osb::laneSum(acc);
+}
+
 }  // namespace
 
-void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
-                double* force) {
+PF_KERNEL_CLONES void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y,
+                                 const J2Fields& s, double* force) {
   const OsbConstants& c = p.osb;
   // beta: does the dilatation see the plastic extension (Eq. 16)? 3D: either way (sum x e^dp = 0 for
   // omega = 1). Plane stress: yes. Plane strain: no -- only then is the in-plane mean stress classical
@@ -48,7 +89,6 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
   const double* __restrict len = scr.len;
   const double* __restrict vj = scr.vj;
   double* __restrict tdv = scr.a;  // trial deviatoric force state
-  double* __restrict sv = scr.b;   // t / |y_j - y_i|
 
   for (int i = fam.begin; i < fam.end; ++i) {
     const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
@@ -56,6 +96,7 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
     const double* __restrict w = fam.influence + b0;
     const double* __restrict epN = s.edpN + b0;
     double* __restrict ep = s.edp + b0;
+    const bool inBlock = osb::chunksStayInBlock(fam, i);
     const double m = fam.weightedVolume[i];
     const double invm = 1.0 / m;
     double my = m;
@@ -71,30 +112,13 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
 
     // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
     // osbDilatation so that the elastic response is bit-identical to "Elastic".
-    double sum = osb::dilatationSum(w, xr, len, beta ? epN : nullptr, vj, n);
+    double sum = osb::dilatationSum(w, xr, len, beta ? epN : nullptr, vj, n, inBlock);
     const double thetaTr = c.k * c.D * sum / m;
 
     // Trial deviatoric force state (Eqs. 40-41) and its moments.
     const double cth = c.c * thetaTr;
-    for (int k = 0; k < n; ++k) tdv[k] = w[k] * bm * (((len[k] - xr[k]) - cth * xr[k]) - epN[k]);
-    // Two interleaved partial sums per moment (even and odd bonds): independent add chains.
-    double S2 = 0, Sx = 0, S3 = 0, A3 = 0, Xx = 0;
-    {
-      double S2b = 0, Sxb = 0, S3b = 0, A3b = 0, Xxb = 0;
-      int k = 0;
-      for (; k + 2 <= n; k += 2) {
-        const double x = xr[k], td = tdv[k], tv = td * vj[k];
-        const double xb = xr[k + 1], tdb = tdv[k + 1], tvb = tdb * vj[k + 1];
-        S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += std::fabs(td) * td * tv; Xx += x * x * vj[k];
-        S2b += tdb * tvb; Sxb += xb * tvb; S3b += tdb * tdb * tvb; A3b += std::fabs(tdb) * tdb * tvb;
-        Xxb += xb * xb * vj[k + 1];
-      }
-      for (; k < n; ++k) {
-        const double x = xr[k], td = tdv[k], tv = td * vj[k];
-        S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += std::fabs(td) * td * tv; Xx += x * x * vj[k];
-      }
-      S2 += S2b; Sx += Sxb; S3 += S3b; A3 += A3b; Xx += Xxb;
-    }
+    const TrialMoments mo = trialDeviatoricState(w, xr, len, epN, vj, bm, cth, n, inBlock, tdv);
+    const double S2 = mo.S2, Sx = mo.Sx, S3 = mo.S3, A3 = mo.A3, Xx = mo.Xx;
     // Split t^d = t_perp + pp x with t_perp . x = 0: the two parts decay at different rates in plane
     // stress, and only pp enters the 2D (t.x)^2 term.
     const double pp = Sx / Xx;
@@ -157,11 +181,11 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
     double theta = thetaTr;
     if (dlam > 0.0) {
       const double a1 = dlam * G1, a2 = dlam * phi * G2 * pp;
-      for (int k = 0; k < n; ++k) ep[k] = epN[k] + a1 * (tdv[k] - pp * xr[k]) + a2 * xr[k];
-      sum = osb::dilatationSum(w, xr, len, beta ? ep : nullptr, vj, n);
-      theta = c.k * c.D * sum / m;
+      sum = updatePlasticExtension(w, xr, len, epN, vj, tdv, a1, a2, pp, n, inBlock, ep);
+      // Plane strain: theta from the total extension, i.e. the trial one (see beta above).
+      if (beta) theta = c.k * c.D * sum / m;
     } else {
-      for (int k = 0; k < n; ++k) ep[k] = epN[k];
+      for (int k = 0; k < n; ++k) ep[k] = epN[k];  // every trial value is written: StateStore::commit swaps
     }
 
     s.lambda[i] = s.lambdaN[i] + dlam;
@@ -177,8 +201,11 @@ void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, c
     // with e^d - e^dp), along the deformed bond.
     const double iso = (c.A - c.B * c.c) * theta * invm;
     const double dev = c.B * invm;
-    for (int k = 0; k < n; ++k) sv[k] = w[k] * (iso * xr[k] + dev * ((len[k] - xr[k]) - ep[k])) / len[k];
-    osb::addBondForces(fam, i, scr, sv, force);
+    auto forceOverLength = [&](int k, auto ch) {  // s = t / |y_j - y_i|; e^dp = 0 gives the elastic s
+      const osb::Lanes x = ch.load(xr + k), l = ch.load(len + k, 1.0);
+      return ch.load(w + k) * (iso * x + dev * ((l - x) - ch.load(ep + k))) / l;
+    };
+    osb::addBondForces(fam, i, scr, inBlock, forceOverLength, force);
   }
 }
 

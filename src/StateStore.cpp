@@ -52,7 +52,7 @@ std::vector<StateSpec> StateStore::specs() const {
 
 void StateStore::commit() {
   for (auto& kv : fields_)
-    if (kv.second.spec.history) kv.second.committed = kv.second.trial;
+    if (kv.second.spec.history) kv.second.committed.swap(kv.second.trial);
 }
 
 void StateStore::rollback() {

@@ -28,8 +28,11 @@ class StateStore {
   const StateSpec& spec(const std::string& name) const;
   std::vector<StateSpec> specs() const;
 
-  void commit();    // trial -> committed for every history field
-  void rollback();  // committed -> trial for every history field
+  // trial -> committed for every history field. The two arrays are swapped, not copied (a copy streamed
+  // every per-bond history array once more per explicit step): afterwards trial holds stale values, so
+  // a material must write every trial value of its history fields on each evaluation, from committed.
+  void commit();
+  void rollback();  // committed -> trial for every history field (a copy: trial is then valid)
 
  private:
   struct Field {

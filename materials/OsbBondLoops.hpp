@@ -1,0 +1,207 @@
+#pragma once
+// Building blocks of the OSB bond loops, shared by the elastic and the J2 kernels so that both do the
+// same arithmetic (an elastic J2 point gives exactly the "Elastic" force). Internal to materials/.
+//
+// A node's family is first gathered into a per-node scratch (bond vectors, deformed lengths, neighbour
+// volumes: ~10 kB for a 120-bond family, so it stays in L1) and every later loop of that node runs on
+// contiguous arrays: one sqrt per bond and step, loops the compiler vectorizes, no allocation or virtual
+// call per bond.
+//
+// The functions are inline so that each target clone of a kernel (PF_KERNEL_CLONES) compiles them for
+// its own vector width. Reductions keep kLanes partial sums whatever that width is, so every clone
+// adds in the same order and gives bit-identical results.
+#include <cmath>
+#include <cstring>
+
+#include "BondFamily.hpp"
+
+// AVX-512 / AVX2 / baseline copies of a kernel, chosen once at load time from the CPU (GCC ifunc).
+// The build itself stays at x86-64-v2; results do not depend on the copy (no FMA contraction:
+// -ffp-contract=off on the kernel sources, see CMakeLists.txt).
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(PF_NO_KERNEL_CLONES)
+#define PF_KERNEL_CLONES __attribute__((target_clones("avx512f", "avx2", "default")))
+#else
+#define PF_KERNEL_CLONES
+#endif
+
+#if defined(__GNUC__)
+#define PF_INLINE inline __attribute__((always_inline))
+#else
+#define PF_INLINE inline
+#endif
+
+namespace pf {
+namespace osb {
+
+// Partial sums per reduction and bonds per vector step: one AVX-512 vector, two AVX2 or four SSE2
+// vectors.
+constexpr int kLanes = 8;
+
+// kLanes doubles as one value (GCC vector extension): the compiler maps it onto whatever vector width
+// the clone has and keeps the partial sums in registers.
+typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
+
+// Loads and stores of kLanes bonds starting at p.
+struct FullChunk {
+  PF_INLINE Lanes load(const double* p, double /*fill*/ = 0.0) const {
+    Lanes v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  PF_INLINE void store(double* p, const Lanes& v) const { std::memcpy(p, &v, sizeof v); }
+};
+
+// The last m < kLanes bonds of a family, loaded as a full vector: the lanes past the family read the
+// next bonds of the array (finite values of the next node) or the scratch's padding (len 1, V_j 0,
+// y_j - y_i 0), so every term a loop adds for them is multiplied by V_j = 0 or y_j - y_i = 0 and is zero.
+// Stores write the m lanes only.
+struct PaddedTail {
+  int m;
+  PF_INLINE Lanes load(const double* p, double /*fill*/ = 0.0) const { return FullChunk{}.load(p); }
+  PF_INLINE void store(double* p, const Lanes& v) const {
+    for (int l = 0; l < m; ++l) p[l] = v[l];
+  }
+};
+
+// The same for the last family of a block, where a full load could run past the bond arrays: the
+// unused lanes hold fill (chosen so that they add zero to every sum and divide by nothing that is
+// zero). Slower (the vector is assembled through memory), so used for that one family only.
+struct TailChunk {
+  int m;
+  PF_INLINE Lanes load(const double* p, double fill = 0.0) const {
+    double buf[kLanes];
+    for (int l = 0; l < kLanes; ++l) buf[l] = l < m ? p[l] : fill;
+    Lanes v;
+    std::memcpy(&v, buf, sizeof v);
+    return v;
+  }
+  PF_INLINE void store(double* p, const Lanes& v) const {
+    for (int l = 0; l < m; ++l) p[l] = v[l];
+  }
+};
+
+PF_INLINE int roundUpToLanes(int n) { return (n + kLanes - 1) / kLanes * kLanes; }
+
+// Whether node i's bond arrays may be read as whole chunks (PaddedTail) without leaving the block's
+// bonds.
+PF_INLINE bool chunksStayInBlock(const FamilyView& fam, int i) {
+  return fam.offsets[i] + roundUpToLanes(fam.offsets[i + 1] - fam.offsets[i]) <= fam.offsets[fam.end];
+}
+
+// Calls body(k, chunk) for the chunks of kLanes bonds of a family of n bonds; the last one is a
+// PaddedTail if inBlock (chunksStayInBlock), else a TailChunk. Bond k + l lands in lane l, so a sum kept
+// per lane adds bond k in partial sum k mod kLanes.
+template <class Body>
+PF_INLINE void forEachChunk(int n, bool inBlock, Body&& body) {
+  int k = 0;
+  for (; k + kLanes <= n; k += kLanes) body(k, FullChunk{});
+  if (k < n) {
+    if (inBlock) body(k, PaddedTail{n - k});
+    else body(k, TailChunk{n - k});
+  }
+}
+
+// Adds the kLanes partial sums in a fixed tree.
+PF_INLINE double laneSum(const Lanes& acc) {
+  return ((acc[0] + acc[1]) + (acc[2] + acc[3])) + ((acc[4] + acc[5]) + (acc[6] + acc[7]));
+}
+
+struct FamilyScratch {
+  double *d0 = nullptr, *d1 = nullptr, *d2 = nullptr;  // y_j - y_i
+  double *len = nullptr;                               // |y_j - y_i|
+  double *vj = nullptr;                                // V_j
+  double *a = nullptr;                                 // per-bond work array of the caller
+  double *g0 = nullptr, *g1 = nullptr, *g2 = nullptr;  // force on the far end, before the scatter
+};
+
+// Thread-local scratch for families of up to the largest family of [fam.begin, fam.end); grown, never
+// shrunk (one allocation per thread and size, not per call).
+FamilyScratch& familyScratch(const FamilyView& fam);
+
+// Gathers node i's family into the scratch; returns its size.
+PF_INLINE int gatherFamily(const FamilyView& fam, const double* __restrict y, int i, FamilyScratch& sc) {
+  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
+  const int* __restrict nb = fam.neighbors + b0;
+  const double* __restrict V = fam.volume;
+  double* __restrict d0 = sc.d0;
+  double* __restrict d1 = sc.d1;
+  double* __restrict d2 = sc.d2;
+  double* __restrict len = sc.len;
+  double* __restrict vj = sc.vj;
+  const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
+  // One vector loop (gathers on AVX2/AVX-512; omp simd overrides the cost model, which rejects them);
+  // std::sqrt vectorizes because the kernel sources are compiled with -fno-math-errno, and sqrtpd
+  // rounds exactly as sqrtsd.
+#pragma omp simd
+  for (int k = 0; k < n; ++k) {
+    const int j = nb[k];
+    const double a = y[3 * j] - yi0, b = y[3 * j + 1] - yi1, c = y[3 * j + 2] - yi2;
+    d0[k] = a; d1[k] = b; d2[k] = c;
+    len[k] = std::sqrt(a * a + b * b + c * c);
+    vj[k] = V[j];
+  }
+  // Padding of the last chunk (see PaddedTail).
+  for (int k = n; k < roundUpToLanes(n); ++k) {
+    d0[k] = d1[k] = d2[k] = 0.0;
+    len[k] = 1.0;
+    vj[k] = 0.0;
+  }
+  return n;
+}
+
+// One term of the dilatation sum (Eqs. 4/16): omega x (e - e^dp) V_j, e = len - x; T = double or Lanes.
+template <class T>
+PF_INLINE T dilatationTerm(const T& w, const T& x, const T& len, const T& ep, const T& vj) {
+  return w * x * ((len - x) - ep) * vj;
+}
+template <class T>
+PF_INLINE T dilatationTerm(const T& w, const T& x, const T& len, const T& vj) {
+  return w * x * (len - x) * vj;
+}
+
+// sum_k omega_k x_k (len_k - x_k - ep_k) V_k over the family (ep null: no plastic extension); inBlock
+// from chunksStayInBlock.
+PF_INLINE double dilatationSum(const double* __restrict w, const double* __restrict x, const double* __restrict len,
+                               const double* __restrict ep, const double* __restrict vj, int n, bool inBlock) {
+  Lanes acc = {};
+  if (ep)
+    forEachChunk(n, inBlock, [&](int k, auto c) {
+      acc += dilatationTerm(c.load(w + k), c.load(x + k), c.load(len + k), c.load(ep + k), c.load(vj + k));
+    });
+  else
+    forEachChunk(n, inBlock, [&](int k, auto c) {
+      acc += dilatationTerm(c.load(w + k), c.load(x + k), c.load(len + k), c.load(vj + k));
+    });
+  return laneSum(acc);
+}
+
+// f_i += t V_j along each bond, f_j -= t V_i, with forceOverLength(k, chunk) giving s = t / len (the
+// scalar force state over the deformed length) for the chunk at bond k; inBlock as for forEachChunk.
+// The arithmetic runs on vectors into the scratch; only the scatter to the neighbours (a read-modify-
+// write of three doubles per bond) stays scalar.
+template <class ForceOverLength>
+PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& sc, bool inBlock,
+                             ForceOverLength&& forceOverLength, double* __restrict force) {
+  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
+  const int* __restrict nb = fam.neighbors + b0;
+  const double Vi = fam.volume[i];
+  Lanes a0 = {}, a1 = {}, a2 = {};
+  forEachChunk(n, inBlock, [&](int k, auto c) {
+    // Padded lanes: y_j - y_i = 0 and len = 1 there, so s is finite and t0..t2 vanish.
+    const Lanes sk = forceOverLength(k, c), vj = c.load(sc.vj + k);
+    const Lanes t0 = sk * c.load(sc.d0 + k), t1 = sk * c.load(sc.d1 + k), t2 = sk * c.load(sc.d2 + k);
+    a0 += t0 * vj; a1 += t1 * vj; a2 += t2 * vj;
+    FullChunk{}.store(sc.g0 + k, t0 * Vi); FullChunk{}.store(sc.g1 + k, t1 * Vi); FullChunk{}.store(sc.g2 + k, t2 * Vi);
+  });
+  const double* __restrict g0 = sc.g0;
+  const double* __restrict g1 = sc.g1;
+  const double* __restrict g2 = sc.g2;
+  for (int k = 0; k < n; ++k) {
+    double* fj = force + 3 * nb[k];
+    fj[0] -= g0[k]; fj[1] -= g1[k]; fj[2] -= g2[k];
+  }
+  force[3 * i] += laneSum(a0); force[3 * i + 1] += laneSum(a1); force[3 * i + 2] += laneSum(a2);
+}
+
+}  // namespace osb
+}  // namespace pf
