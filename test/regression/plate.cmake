@@ -10,12 +10,7 @@ periforge_check(plate_iso_coarse_np2_vs_gold plate_iso_coarse_np2
   ${PY} ${PROJECT_SOURCE_DIR}/scripts/compare_csv
   ${CMAKE_CURRENT_BINARY_DIR}/regression/plate_iso_coarse_np2/plate_iso_coarse.csv
   ${REG}/plate/plate_iso_coarse_gold.csv
-  --default abs:2.0
-  --tol time=abs:1e-12 --tol step=abs:0 --tol Applied_Displacement=abs:1e-12
-  --tol Probe_A_Signed_Von_Mises_Stress=abs:6e4 --tol Probe_B_Signed_Von_Mises_Stress=abs:6e4
-  --tol Probe_A_Equivalent_Plastic_Strain=abs:4e-7 --tol Probe_B_Equivalent_Plastic_Strain=abs:4e-7
-  --tol Probe_Applied_DisplacementX=abs:1e-12 --tol Probe_Applied_DisplacementY=abs:5e-9
-  --tol Probe_Applied_DisplacementZ=abs:1e-12)
+  ${plate_tols})
 
 # The same plate solved by NOXQuasiStatic (np = 2) against ADR's history (np = 1), both at relative
 # tolerance 1e-7 (issue 4: "same history as ADR within the regression tolerances"). At 1e-5 the two
@@ -27,9 +22,4 @@ periforge_check(plate_iso_coarse_nox_vs_adr plate_iso_coarse_nox_np2
   ${PY} ${PROJECT_SOURCE_DIR}/scripts/compare_csv
   ${CMAKE_CURRENT_BINARY_DIR}/regression/plate_iso_coarse_nox_np2/plate_iso_coarse_nox.csv
   ${REG}/plate/plate_iso_coarse_adr_tight_gold.csv
-  --default abs:2.0
-  --tol time=abs:1e-12 --tol step=abs:0 --tol Applied_Displacement=abs:1e-12
-  --tol Probe_A_Signed_Von_Mises_Stress=abs:6e4 --tol Probe_B_Signed_Von_Mises_Stress=abs:6e4
-  --tol Probe_A_Equivalent_Plastic_Strain=abs:4e-7 --tol Probe_B_Equivalent_Plastic_Strain=abs:4e-7
-  --tol Probe_Applied_DisplacementX=abs:1e-12 --tol Probe_Applied_DisplacementY=abs:5e-9
-  --tol Probe_Applied_DisplacementZ=abs:1e-12)
+  ${plate_tols})
