@@ -48,7 +48,7 @@ std::vector<std::uint64_t> mortonKeys(const std::vector<double>& coords) {
 
 DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords,
                                      const std::vector<int>& owner, const std::vector<double>& horizon,
-                                     const std::vector<int>& block, Influence influence)
+                                     const std::vector<int>& block, const Influence& influence)
     : comm_(comm) {
   const int me = comm_.MyPID();
   numGlobal_ = static_cast<int>(owner.size());

@@ -27,7 +27,7 @@ class DistributedLayout {
   // Whole cloud on every rank: coords (3 per point), owner rank, horizon and block id per point; the
   // influence function sets each bond's omega from its length and its owner's horizon.
   DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords, const std::vector<int>& owner,
-                    const std::vector<double>& horizon, const std::vector<int>& block, Influence influence);
+                    const std::vector<double>& horizon, const std::vector<int>& block, const Influence& influence);
 
   int numOwned() const { return numOwned_; }
   int numOverlap() const { return static_cast<int>(gids_.size()); }

@@ -2,27 +2,65 @@
 
 #include <cmath>
 
+#include <RTC_FunctionRTC.hh>
+
 #include "InputError.hpp"
 
 namespace pf {
+
+namespace {
+
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+}  // namespace
 
 Influence influenceFromName(const std::string& name, const std::string& inputFile) {
   if (name == "One") return Influence::One;
   if (name == "Parabolic Decay") return Influence::ParabolicDecay;
   if (name == "Gaussian") return Influence::Gaussian;
-  throw InputError(inputFile + ": 'Influence Function' = '" + name +
-                   "' is not one of 'One', 'Parabolic Decay', 'Gaussian'");
+  // Peridigm (InfluenceFunction::setInfluenceFunction): anything else is an expression in zeta and
+  // horizon, "value = " prepended unless the text assigns value itself.
+  Influence f(Influence::UserDefined);
+  f.expression = name;
+  std::string body = name.find("value") == std::string::npos ? "value = " + name : name;
+  const std::size_t last = body.find_last_not_of(" \t\r\n");
+  if (last == std::string::npos)
+    throw InputError(inputFile + ": 'Influence Function' is empty (give 'One', 'Parabolic Decay', 'Gaussian' or an "
+                                 "expression in zeta and horizon)");
+  if (body[last] != ';' && body[last] != '}') body += ";";
+  f.function = std::make_shared<PG_RuntimeCompiler::Function>(3, "pf_influence");
+  for (const char* v : {"zeta", "horizon", "value"}) f.function->addVar("double", v);
+  if (!f.function->addBody(body))
+    throw InputError(inputFile + ": 'Influence Function' = '" + oneLine(name) +
+                     "' is not 'One', 'Parabolic Decay', 'Gaussian' nor an expression in zeta and horizon: " +
+                     oneLine(f.function->getErrors()));
+  influenceValue(f, 1.0, 1.0);  // a trial run reports run-time errors at input time
+  return f;
 }
 
-double influenceValue(Influence f, double r, double horizon) {
+double influenceValue(const Influence& f, double r, double horizon) {
   const double s = r / horizon;
-  switch (f) {
+  switch (f.kind) {
     case Influence::One: return 1.0;
     // Peridigm's parabolicDecay(): flat to half the horizon, then -4s^2 + 4s (continuous at s = 0.5,
     // zero at s = 1).
     case Influence::ParabolicDecay: return s < 0.5 ? 1.0 : -4.0 * s * s + 4.0 * s;
     // Peridigm's gaussian(): exp(-r^2 / delta^2), no width factor.
     case Influence::Gaussian: return std::exp(-s * s);
+    case Influence::UserDefined: {
+      PG_RuntimeCompiler::Function& fn = *f.function;
+      fn.varValueFill(0, r);
+      fn.varValueFill(1, horizon);
+      fn.varValueFill(2, 0.0);
+      if (!fn.execute())
+        throw InputError("'Influence Function' = '" + oneLine(f.expression) + "': cannot evaluate: " +
+                         oneLine(fn.getErrors()));
+      return fn.getValueOfVar("value");
+    }
   }
   return 1.0;
 }

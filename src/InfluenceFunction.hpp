@@ -1,14 +1,29 @@
 #pragma once
 // Peridigm's influence functions omega(r, delta), s = r/delta: "One"; "Parabolic Decay" (1 for s < 0.5,
-// else -4s^2 + 4s); "Gaussian" (exp(-s^2)), as in Peridigm_InfluenceFunction.hpp. Unknown names are an
-// InputError.
+// else -4s^2 + 4s); "Gaussian" (exp(-s^2)), as in Peridigm_InfluenceFunction.hpp. Any other string is, as
+// in Peridigm, a user-defined function compiled by Pamgen's RTCompiler in the variables zeta (the bond's
+// reference length, not scaled) and horizon, e.g. "1.0/zeta"; one that does not compile is an InputError.
+#include <memory>
 #include <string>
+
+namespace PG_RuntimeCompiler {
+class Function;
+}
 
 namespace pf {
 
-enum class Influence { One, ParabolicDecay, Gaussian };
+struct Influence {
+  enum Kind { One, ParabolicDecay, Gaussian, UserDefined };
+  Kind kind = One;
+  std::string expression;                                   // UserDefined only
+  std::shared_ptr<PG_RuntimeCompiler::Function> function;  // compiled expression, UserDefined only
+  Influence(Kind k = One) : kind(k) {}
+  bool operator==(Kind k) const { return kind == k; }
+};
 
 Influence influenceFromName(const std::string& name, const std::string& inputFile);
-double influenceValue(Influence f, double r, double horizon);
+// Not thread-safe for UserDefined (the compiled function keeps its variables as state); it is called
+// once per bond at set-up.
+double influenceValue(const Influence& f, double r, double horizon);
 
 }  // namespace pf

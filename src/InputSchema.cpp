@@ -443,6 +443,13 @@ void validateOutput(const PL& o, const std::string& file, const std::set<std::st
   }
   if (o.isSublist("Output Variables")) {
     const PL& v = o.sublist("Output Variables");
+    // Peridigm fields its regression decks request that Periforge does not compute: named as such
+    // rather than as unknown, so the deck's author knows the request was understood.
+    for (const char* n : {"Stored_Elastic_Energy", "Strain_Energy", "Global_Kinetic_Energy", "Horizon", "Radius",
+                          "Neighborhood_Volume"})
+      if (v.isParameter(n))
+        fail(file, path + "/Output Variables", std::string("Peridigm's output variable '") + n +
+                                                   "' is not supported by Periforge");
     std::vector<P> ps;
     for (const std::string& n : knownOutputVariables()) ps.push_back({n, T::Bool, false});
     checkList(v, file, path + "/Output Variables", ps, {});
@@ -589,6 +596,16 @@ MaterialInput materialInputFor(const PL& m, const std::string& materialName, con
 }
 
 void validateInput(const PL& p, const std::string& inputFile) {
+  // Peridigm runs "Solver1", "Solver2", ... in sequence and writes one file per "Output1", "Output2", ...;
+  // Periforge has one solver and one output list, so such decks are told so instead of "unknown sub-list".
+  for (auto it = p.begin(); it != p.end(); ++it) {
+    const std::string& n = p.name(it);
+    for (const std::string stem : {"Solver", "Output"})
+      if (p.entry(it).isList() && n.size() > stem.size() && n.compare(0, stem.size(), stem) == 0 &&
+          n.find_first_not_of("0123456789", stem.size()) == std::string::npos)
+        fail(inputFile, "top level", "'" + n + "': Peridigm's numbered " + stem + " lists (" + stem + "1, " + stem +
+                                         "2, ...) are not supported by Periforge; give one '" + stem + "' list");
+  }
   checkList(p, inputFile, "top level", {{"Verbose", T::Bool, false}},
             {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Solver", "Output"});
   const std::set<std::string> generated =

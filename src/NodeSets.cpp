@@ -1,7 +1,10 @@
 #include "NodeSets.hpp"
 
+#include <mpi.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 
@@ -18,6 +21,14 @@ namespace {
   throw InputError(file + ": " + path + ": " + msg);
 }
 
+// Printed by rank 0 only (every rank resolves the same node sets).
+void warn(const std::string& file, const std::string& path, const std::string& msg) {
+  int initialized = 0, rank = 0;
+  MPI_Initialized(&initialized);
+  if (initialized) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) std::fprintf(stderr, "periforge: warning: %s: %s: %s\n", file.c_str(), path.c_str(), msg.c_str());
+}
+
 bool allIntegers(const std::vector<std::string>& words) {
   for (const std::string& w : words)
     if (w.empty() || w.find_first_not_of("0123456789+-") != std::string::npos) return false;
@@ -26,7 +37,7 @@ bool allIntegers(const std::vector<std::string>& words) {
 
 // Ids are 1-based global ids in the order of the cloud (Peridigm's convention).
 std::vector<int> idsToIndices(const std::vector<std::string>& words, int n, const std::string& file,
-                              const std::string& path, const std::string& where) {
+                              const std::string& path, const std::string& where, int& skipped) {
   std::vector<int> out;
   out.reserve(words.size());
   for (const std::string& w : words) {
@@ -38,9 +49,14 @@ std::vector<int> idsToIndices(const std::vector<std::string>& words, int n, cons
     } catch (const std::exception&) {
       fail(file, path, where + "'" + w + "' is not a node id");
     }
-    if (id < 1 || id > n)
-      fail(file, path, where + "node id " + w + " does not exist (the discretization has ids 1.." +
-                           std::to_string(n) + ")");
+    // Peridigm skips node-set ids its mesh does not have (several of its own decks list id 0, a relic of
+    // 0-based ids), so such ids are dropped here too, loudly: the condition applies to the other ids only.
+    if (id < 1 || id > n) {
+      warn(file, path, where + "node id " + w + " does not exist (the discretization has ids 1.." +
+                           std::to_string(n) + "); ignored, as Peridigm does");
+      ++skipped;
+      continue;
+    }
     out.push_back(static_cast<int>(id - 1));
   }
   return out;
@@ -104,6 +120,7 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const PL& bcs, const Poi
     const std::string& name = bcs.name(it);
     const std::string path = "Boundary Conditions/" + name;
     std::vector<int> ids;
+    int skipped = 0;  // ids outside the discretization, dropped with a warning
     if (bcs.entry(it).isList()) {
       const PL& r = bcs.sublist(name);
       if (getText(r, "Type", "") != "Node Set Region") continue;
@@ -112,12 +129,12 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const PL& bcs, const Poi
       const std::string text = scalarAsText(bcs.entry(it));
       const std::vector<std::string> words = splitWords(text);
       if (allIntegers(words)) {
-        ids = idsToIndices(words, cloud.size(), inputFile, path, "");
+        ids = idsToIndices(words, cloud.size(), inputFile, path, "", skipped);
       } else {
         forEachDataLine(resolvePath(text, inputDir), inputFile, path, "node set",
                         [&](const std::string& line, const std::string& where) {
                           const std::vector<int> more =
-                              idsToIndices(splitWords(line), cloud.size(), inputFile, path, where + ": ");
+                              idsToIndices(splitWords(line), cloud.size(), inputFile, path, where + ": ", skipped);
                           ids.insert(ids.end(), more.begin(), more.end());
                         });
       }
@@ -125,7 +142,10 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const PL& bcs, const Poi
     if (sets.count(name)) fail(inputFile, path, "node set name clashes with a generated or built-in node set");
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-    if (ids.empty()) fail(inputFile, path, "node set '" + name + "' is empty");
+    // A set emptied by dropped ids is kept (Peridigm's conditions on it then act on no node); one that lists
+    // nothing at all is still an error.
+    if (ids.empty() && skipped == 0) fail(inputFile, path, "node set '" + name + "' is empty");
+    if (ids.empty()) warn(inputFile, path, "node set '" + name + "' holds no node of the discretization");
     sets[name] = std::move(ids);
   }
   for (const auto& [name, ids] : cloud.generatedNodeSets)

@@ -14,7 +14,7 @@ namespace pf {
 namespace {
 
 const std::vector<std::string> kVectors = {"Displacement", "Velocity", "Force_Density", "Force",
-                                           "Model_Coordinates", "Coordinates"};
+                                           "Model_Coordinates", "Coordinates", "Acceleration"};
 // Scalars the core itself provides; everything else must be a material output field.
 const std::vector<std::string> kCoreScalars = {"Weighted_Volume", "Element_Id", "Proc_Num", "Number_Of_Neighbors",
                                                "Volume"};
@@ -32,7 +32,12 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
     : pb_(problem), model_(*problem.model) {
   const bool root = model_.layout().rank() == 0;
   const StateStore& state = model_.state();
+  // Peridigm's Verlet integrator defines the acceleration (f + b)/rho it steps with; the quasi-static
+  // solvers have none, so asking for it there is an error rather than a field of zeros.
+  const bool dynamic = input.isSublist("Solver") && input.sublist("Solver").isSublist("Verlet");
   auto checkVariable = [&](const std::string& var, const std::string& where) {
+    if (var == "Acceleration" && !dynamic)
+      throw InputError(inputFile + ": " + where + ": 'Acceleration' is only written by the Verlet solver");
     if (contains(kVectors, var) || contains(kCoreScalars, var)) return;
     if (state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node) return;
     throw InputError(inputFile + ": " + where + ": '" + var + "' is not computed by any material of this run");
@@ -159,6 +164,8 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   if (var == "Velocity") return v[3 * i + comp];
   if (var == "Force_Density") return f[3 * i + comp];
   if (var == "Force") return f[3 * i + comp] * model_.volume()[i];
+  // bodyForce_ holds b at the step's time (onStep fills it first) or zeros.
+  if (var == "Acceleration") return (f[3 * i + comp] + bodyForce_[3 * i + comp]) / model_.density()[i];
   if (var == "Model_Coordinates") return x[3 * i + comp];
   if (var == "Coordinates") return x[3 * i + comp] + u[3 * i + comp];
   if (var == "Weighted_Volume") return model_.weightedVolume()[i];

@@ -22,3 +22,11 @@ periforge_check(bar_3d_nox_np2_check bar_3d_nox_np2
 periforge_check(bar_3d_nox_vs_adr "bar_3d_nox_np2;bar_3d_np1"
   ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_nox_np2/bar_3d_nox.e
   ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_np1/bar_3d.e ${REG}/bar/nox_vs_adr.comp)
+
+# Peridigm-compatibility features on a deck of our own (no Peridigm files needed): user-defined influence
+# function, node-set ids the mesh lacks (dropped with a warning), Verlet acceleration output.
+foreach(np 1 2)
+  periforge_run(peridigm_compat_line_np${np} ${REG}/compat/compat_line.xml ${np})
+  periforge_check(peridigm_compat_line_np${np}_check peridigm_compat_line_np${np}
+    ${PY} ${REG}/compat/check_compat_line.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_line_np${np}/compat_line.e)
+endforeach()

@@ -75,6 +75,17 @@ TEST(Discretization, QuickGridOrderAndVolumes) {
   EXPECT_EQ(c.influence, pf::Influence::One);
 }
 
+TEST(Discretization, UserDefinedInfluenceFunctionAsPeridigm) {
+  // Peridigm compiles any other string as an expression in zeta (bond length) and horizon.
+  const pf::Influence f = pf::influenceFromName("1.0/zeta", kFile);
+  EXPECT_EQ(f, pf::Influence::UserDefined);
+  EXPECT_DOUBLE_EQ(pf::influenceValue(f, 2.0, 3.0), 0.5);
+  const pf::Influence g = pf::influenceFromName("if (zeta < 0.5*horizon) { value = 1.0; } else { value = 0.25; }", kFile);
+  EXPECT_DOUBLE_EQ(pf::influenceValue(g, 1.0, 3.0), 1.0);
+  EXPECT_DOUBLE_EQ(pf::influenceValue(g, 2.0, 3.0), 0.25);
+  EXPECT_INPUT_ERROR(pf::influenceFromName("1.0/(zeta", kFile), kFile, "Influence Function");
+}
+
 TEST(Discretization, InfluenceFunctionsMatchPeridigm) {
   ParameterList d = quickGrid(1, 1, 1);
   d.set("Influence Function", std::string("Parabolic Decay"));
@@ -198,10 +209,14 @@ TEST(NodeSets, Errors) {
   const pf::PointCloud c = pf::buildDiscretization(quickGrid(3, 2, 2), kFile, ".");
   const std::string dir = ::testing::TempDir();
   {
+    // Ids the discretization does not have are dropped with a warning, as Peridigm does (its decks list
+    // id 0); a set left with no node is kept empty rather than rejected.
     ParameterList bc;
-    bc.set("Far Away", std::string("1 13"));
-    EXPECT_INPUT_ERROR(pf::resolveNodeSets(bc, c, kFile, dir), kFile, "Boundary Conditions/Far Away");
-    EXPECT_INPUT_ERROR(pf::resolveNodeSets(bc, c, kFile, dir), kFile, "node id 13 does not exist");
+    bc.set("Far Away", std::string("0 1 13"));
+    bc.set("Only Zero", std::string("0"));
+    const auto s = pf::resolveNodeSets(bc, c, kFile, dir);
+    EXPECT_EQ(s.at("Far Away"), (std::vector<int>{0}));
+    EXPECT_TRUE(s.at("Only Zero").empty());
   }
   {
     ParameterList bc;

@@ -1,0 +1,33 @@
+#!/usr/bin/env python3
+"""Checks compat_line.e: weighted volume m = sum omega |xi|^2 V with omega = 1/zeta (ends: 1*1 + 4/2 = 3,
+middle: 2), the acceleration equals Force / (rho V), and the two ends moved towards each other (the id 0
+in the node set was dropped, ids 1 and 3 kept). usage: check_compat_line.py RUN.e"""
+import sys
+
+import netCDF4
+import numpy as np
+
+
+def names(d, key):
+    return [b"".join(x for x in row if x).decode() for row in d[key][:].data]
+
+
+d = netCDF4.Dataset(sys.argv[1])
+nod, ele = names(d, "name_nod_var"), names(d, "name_elem_var")
+nv = lambda n: np.asarray(d["vals_nod_var%d" % (nod.index(n) + 1)][:])
+ev = lambda n: np.asarray(d["vals_elem_var%deb1" % (ele.index(n) + 1)][:])
+ok = True
+m = ev("Weighted_Volume")[-1]
+if not np.allclose(m, [3.0, 2.0, 3.0], rtol=1e-12):
+    print("Weighted_Volume", m, "expected [3, 2, 3]"); ok = False
+for c in "XYZ":
+    a, f = nv("Acceleration" + c), nv("Force" + c)
+    if not np.allclose(a, f / 1000.0, rtol=1e-12, atol=1e-12 * np.abs(f).max()):
+        print("Acceleration" + c, "differs from Force/(rho V)"); ok = False
+ux = nv("DisplacementX")[-1]
+if not (ux[0] > 0 and ux[2] < 0):
+    print("ends did not move inwards:", ux); ok = False
+if len(d["time_whole"]) != 5:
+    print("expected 5 time steps, got", len(d["time_whole"])); ok = False
+print("compat_line: PASS" if ok else "compat_line: FAIL")
+sys.exit(0 if ok else 1)
