@@ -19,9 +19,11 @@ const char* kUsage =
     "usage: periforge-point [--model NAME] [--dim 3D|PlaneStress|PlaneStrain] [--ratio R] "
     "[--path uniaxial|shear|cyclic]\n"
     "                       [--E Pa] [--nu v] [--sy Pa] [--K Pa] [--H Pa] [--strain s] [--steps n]\n"
+    "                       [--partial-volume 0|1]\n"
     "  Homogeneous deformation y = (I + eps) X of one lattice point's family (spacing 1 mm, horizon R mm):\n"
     "  uniaxial: eps_xx = s; shear: eps_xy = eps_yx = s/2; cyclic: eps_xx 0 -> s -> -s -> s.\n"
-    "  Defaults: Elastic Plastic Hardening, 3D, 10, uniaxial, 200e9, 0.3, 600e6, 20e9, 0, 0.012, 120.\n"
+    "  Defaults: Elastic Plastic Hardening, 3D, 10, uniaxial, 200e9, 0.3, 600e6, 20e9, 0, 0.012, 120, 0.\n"
+    "  --partial-volume 1 weights each bond by the share of its cell inside the horizon.\n"
     "  CSV: step,strain,von_mises,signed_von_mises,eq_plastic_strain,lambda,back_stress\n";
 
 double number(const std::string& flag, const std::string& text) {
@@ -39,7 +41,8 @@ int main(int argc, char** argv) {
     std::map<std::string, std::string> opt = {{"--model", "Elastic Plastic Hardening"}, {"--dim", "3D"},
                                               {"--ratio", "10"}, {"--path", "uniaxial"}, {"--E", "200e9"},
                                               {"--nu", "0.3"}, {"--sy", "600e6"}, {"--K", "20e9"}, {"--H", "0"},
-                                              {"--strain", "0.012"}, {"--steps", "120"}};
+                                              {"--strain", "0.012"}, {"--steps", "120"},
+                                              {"--partial-volume", "0"}};
     for (int a = 1; a < argc; ++a) {
       const std::string flag = argv[a];
       if (flag == "--help" || flag == "-h") { std::cout << kUsage; return 0; }
@@ -68,7 +71,9 @@ int main(int argc, char** argv) {
     else if (dim != "3D") throw pf::InputError("periforge-point: --dim must be 3D, PlaneStress or PlaneStrain, got '" + dim + "'");
 
     auto mat = pf::makeMaterial(model, v);
-    pf::MaterialPoint mp(*mat, dx, ratio, dx);
+    const std::string pv = opt["--partial-volume"];
+    if (pv != "0" && pv != "1") throw pf::InputError("periforge-point: --partial-volume must be 0 or 1, got '" + pv + "'");
+    pf::MaterialPoint mp(*mat, dx, ratio, dx, pv == "1");
     auto field = [&](const char* name) { return mp.state().has(name) ? mp.value(name) : 0.0; };
     std::printf("step,strain,von_mises,signed_von_mises,eq_plastic_strain,lambda,back_stress\n");
     for (int k = 1; k <= steps; ++k) {

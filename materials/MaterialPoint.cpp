@@ -21,22 +21,26 @@ std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<
   return entry->create(in);
 }
 
-MaterialPoint::MaterialPoint(const Material& mat, double dx, double ratio, double thickness) : mat_(mat) {
+MaterialPoint::MaterialPoint(const Material& mat, double dx, double ratio, double thickness, bool partialVolume)
+    : mat_(mat) {
   const bool planar = isPlanar(mat.dimension());
   const double horizon = ratio * dx;
-  const int n = static_cast<int>(std::ceil(ratio)) + 1;
+  // Partial-volume families reach half a cell diagonal (< dx) beyond the horizon.
+  const double margin = partialVolume ? dx : 0.5 * dx;
+  const int n = static_cast<int>(std::ceil(ratio)) + (partialVolume ? 2 : 1);
   const int nz = planar ? 0 : n;
   x_ = {0.0, 0.0, 0.0};  // the centre is node 0, the only owned node
   for (int i = -n; i <= n; ++i)
     for (int j = -n; j <= n; ++j)
       for (int k = -nz; k <= nz; ++k) {
         if (i == 0 && j == 0 && k == 0) continue;
-        if (std::sqrt(double(i * i + j * j + k * k)) * dx > horizon * (1.0 + 1e-6) + 0.5 * dx) continue;
+        if (std::sqrt(double(i * i + j * j + k * k)) * dx > horizon * (1.0 + 1e-6) + margin) continue;
         x_.push_back(i * dx); x_.push_back(j * dx); x_.push_back(k * dx);
       }
   const int numPoints = static_cast<int>(x_.size() / 3);
   volume_.assign(numPoints, planar ? dx * dx * thickness : dx * dx * dx);
-  buildFamilies(x_, 1, {horizon}, family_);
+  const std::array<double, 3> cell = {dx, dx, planar ? 0.0 : dx};
+  buildFamilies(x_, 1, {horizon}, family_, partialVolume ? &cell : nullptr);
   family_.influence.assign(family_.numBonds(), 1.0);  // omega = 1, as in the paper
   m_.assign(numPoints, 0.0);
   view_ = makeView(family_, 0, 1, x_.data(), volume_.data(), m_.data(), horizon);

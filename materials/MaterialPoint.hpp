@@ -21,8 +21,9 @@ std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<
 
 class MaterialPoint {
  public:
-  // thickness: out-of-plane thickness of the nodal volumes of a 2D model (ignored in 3D).
-  MaterialPoint(const Material& mat, double dx, double ratio, double thickness = 0.0);
+  // thickness: out-of-plane thickness of the nodal volumes of a 2D model (ignored in 3D); partialVolume:
+  // weight the bonds by the share of their cell inside the horizon (PartialVolume.hpp).
+  MaterialPoint(const Material& mat, double dx, double ratio, double thickness = 0.0, bool partialVolume = false);
 
   void deform(const std::array<double, 9>& F);  // y = F X, F row-major
   void evaluate();                              // trial state of the centre (may throw ConstitutiveFailure)

@@ -140,6 +140,11 @@ PF_INLINE int gatherFamily(const FamilyView& fam, const double* __restrict y, in
     len[k] = std::sqrt(a * a + b * b + c * c);
     vj[k] = V[j];
   }
+  // Partial volumes: the neighbour counts with the share of its cell inside the horizon.
+  if (fam.fraction) {
+    const double* __restrict fr = fam.fraction + b0;
+    for (int k = 0; k < n; ++k) vj[k] *= fr[k];
+  }
   // Padding of the last chunk (see PaddedTail).
   for (int k = n; k < roundUpToLanes(n); ++k) {
     d0[k] = d1[k] = d2[k] = 0.0;
@@ -196,9 +201,17 @@ PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& 
   const double* __restrict g0 = sc.g0;
   const double* __restrict g1 = sc.g1;
   const double* __restrict g2 = sc.g2;
-  for (int k = 0; k < n; ++k) {
-    double* fj = force + 3 * nb[k];
-    fj[0] -= g0[k]; fj[1] -= g1[k]; fj[2] -= g2[k];
+  if (fam.fraction) {  // the reaction on j carries the same share of the bond as f_i (V_j fr)
+    const double* __restrict fr = fam.fraction + b0;
+    for (int k = 0; k < n; ++k) {
+      double* fj = force + 3 * nb[k];
+      fj[0] -= g0[k] * fr[k]; fj[1] -= g1[k] * fr[k]; fj[2] -= g2[k] * fr[k];
+    }
+  } else {
+    for (int k = 0; k < n; ++k) {
+      double* fj = force + 3 * nb[k];
+      fj[0] -= g0[k]; fj[1] -= g1[k]; fj[2] -= g2[k];
+    }
   }
   force[3 * i] += laneSum(a0); force[3 * i + 1] += laneSum(a1); force[3 * i + 2] += laneSum(a2);
 }

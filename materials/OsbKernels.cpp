@@ -122,10 +122,11 @@ void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, con
       const double t = w[k] * (iso * theta * x[k] + dev * (len - x[k]));
       const double dt = w[k] * (iso * dtheta * x[k] + dev * de);
       // d(t M) = dt M + t (I - M M^T) dY / |Y|
+      const double Vi = fam.fraction ? V[i] * fam.fraction[off + k] : V[i];  // as addBondForces
       for (int e = 0; e < 3; ++e) {
         const double dT = dt * M[e] + t * (dd[e] - M[e] * de) / len;
         dforce[3 * i + e] += dT * sc.vj[k];
-        dforce[3 * j + e] -= dT * V[i];
+        dforce[3 * j + e] -= dT * Vi;
       }
     }
   }
@@ -134,7 +135,8 @@ void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, con
 void osbPairStiffness(const FamilyView& fam, const OsbConstants& c, double* stiffness) {
   for (int i = fam.begin; i < fam.end; ++i) {
     const double scale = c.B / fam.weightedVolume[i];
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) stiffness[b] = scale * fam.influence[b];
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b)
+      stiffness[b] = scale * (fam.fraction ? fam.influence[b] * fam.fraction[b] : fam.influence[b]);
   }
 }
 
@@ -143,12 +145,14 @@ void osbStiffnessBound(const FamilyView& fam, const OsbConstants& c, double* bou
   for (int i = fam.begin; i < fam.end; ++i) {
     const double m = fam.weightedVolume[i];
     double S = 0.0;  // sum omega x V: scale of d theta / d e
+    // Partial volumes weight omega here as they weight V_j in the kernels.
+    auto weight = [&](int b) { return fam.fraction ? fam.influence[b] * fam.fraction[b] : fam.influence[b]; };
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b)
-      S += fam.influence[b] * fam.refLength[b] * fam.volume[fam.neighbors[b]];
+      S += weight(b) * fam.refLength[b] * fam.volume[fam.neighbors[b]];
     double sum = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       const int j = fam.neighbors[b];
-      const double w = fam.influence[b], x = fam.refLength[b], Vj = fam.volume[j];
+      const double w = weight(b), x = fam.refLength[b], Vj = fam.volume[j];
       // A bond along n couples component a to all three: sum_b |n_a n_b| = |n_a| |n|_1 <= max_a of it.
       double n[3], n1 = 0.0, nmax = 0.0;
       for (int d = 0; d < 3; ++d) {

@@ -7,7 +7,8 @@ void computeWeightedVolume(const FamilyView& fam, double* m) {
     double sum = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       const double r = fam.refLength[b];
-      sum += fam.influence[b] * r * r * fam.volume[fam.neighbors[b]];
+      const double w = fam.fraction ? fam.influence[b] * fam.fraction[b] : fam.influence[b];
+      sum += w * r * r * fam.volume[fam.neighbors[b]];
     }
     m[i] = sum;
   }

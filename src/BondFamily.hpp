@@ -12,6 +12,7 @@ struct BondFamily {
   std::vector<int> neighbors;      // overlap-local index of the far end of each bond
   std::vector<double> refLength;   // |xi| of each bond
   std::vector<double> influence;   // omega(|xi|) of each bond
+  std::vector<double> fraction;    // partial volume: share of V_j inside the horizon (empty = all 1)
 
   int numOwned() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
   std::size_t numBonds() const { return neighbors.size(); }
@@ -28,6 +29,9 @@ struct FamilyView {
   const double* x = nullptr;        // reference coordinates, 3 per overlap node
   const double* volume = nullptr;   // overlap nodes
   const double* weightedVolume = nullptr;  // m = sum omega |xi|^2 V' per overlap node (ghosts too)
+  // Per bond: the share of V_j that lies inside the horizon (partial-volume quadrature), or null when
+  // every neighbour counts whole. Every family sum weights V_j by it, and the reaction f_j -= T V_i too.
+  const double* fraction = nullptr;
   double horizon = 0.0;
 };
 
@@ -40,6 +44,7 @@ inline FamilyView makeView(const BondFamily& f, int begin, int end, const double
   v.neighbors = f.neighbors.data();
   v.refLength = f.refLength.data();
   v.influence = f.influence.data();
+  v.fraction = f.fraction.empty() ? nullptr : f.fraction.data();
   v.x = x;
   v.volume = volume;
   v.weightedVolume = m;
@@ -47,7 +52,8 @@ inline FamilyView makeView(const BondFamily& f, int begin, int end, const double
   return v;
 }
 
-// m_i = sum_j omega_ij |xi_ij|^2 V_j for owned nodes [begin, end) (Pirzadeh 2024 Eq. 5 context).
+// m_i = sum_j omega_ij |xi_ij|^2 V_j (V_j times the bond's fraction, if any) for owned nodes [begin, end)
+// (Pirzadeh 2024 Eq. 5 context).
 void computeWeightedVolume(const FamilyView& fam, double* m);
 
 }  // namespace pf

@@ -61,6 +61,7 @@ PointCloud quickGrid(const PL& d, const std::string& file) {
         pushPoint(c, o[0] + (i + 0.5) * h[0], o[1] + (j + 0.5) * h[1], o[2] + (k + 0.5) * h[2], vol, 1);
   const double tol = 1e-12 * std::max({h[0], h[1], h[2]});
   c.spacing = (std::fabs(h[0] - h[1]) <= tol && std::fabs(h[0] - h[2]) <= tol) ? h[0] : 0.0;
+  c.cell = h;
   return c;
 }
 
@@ -132,6 +133,7 @@ PointCloud generator(const PL& d, const std::string& file, double defaultLayerWi
 
   PointCloud c;
   c.spacing = dx;
+  c.cell = {dx, dx, box ? dx : 0.0};
   double vol = dx * dx * dx;
   if (!box) {
     c.planar = true;
@@ -256,6 +258,9 @@ PointCloud buildDiscretization(const PL& d, const std::string& inputFile, const 
   else if (type == "Box With Holes") c = generator(d, inputFile, defaultLayerWidth, true);
   else fail(inputFile, "Discretization", "unknown 'Type' = '" + type + "'");
   c.influence = influenceFromName(getText(d, "Influence Function", "One"), inputFile + ": Discretization");
+  c.partialVolume = d.isParameter("Partial Volume") && d.get<bool>("Partial Volume");
+  if (c.partialVolume && !(c.cell[0] > 0.0))
+    fail(inputFile, "Discretization", "'Partial Volume' needs a regular grid; this discretization has no cells");
   if (c.size() == 0) fail(inputFile, "Discretization", "the discretization has no points (holes cover everything)");
   return c;
 }

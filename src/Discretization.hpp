@@ -2,6 +2,7 @@
 // Builds the point cloud from the "Discretization" list: Peridigm's PdQuickGrid and Text File, and
 // Periforge's "Rectangle With Holes" (2D) and "Box With Holes" (3D) generators with optional fictitious
 // boundary layers. Every rank builds the same cloud in the same order; bad files are InputErrors.
+#include <array>
 #include <functional>
 #include <map>
 #include <string>
@@ -22,6 +23,8 @@ struct PointCloud {                     // every rank builds the same cloud, det
   std::map<std::string, std::vector<int>> generatedNodeSets;  // 0-based, e.g. fictitious layer "Left Layer"
   double spacing = 0.0;                 // grid spacing if uniform (for messages/defaults), else 0
   Influence influence = Influence::One; // "Influence Function" of the Discretization list
+  std::array<double, 3> cell{};         // grid cell edges of regular grids (0: flat axis or no grid)
+  bool partialVolume = false;           // "Partial Volume": bonds weighted by the cell share in the horizon
   int size() const { return (int)volume.size(); }
 };
 

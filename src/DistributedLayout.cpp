@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "NeighborSearch.hpp"
+#include "PartialVolume.hpp"
 
 namespace pf {
 namespace {
@@ -48,7 +49,8 @@ std::vector<std::uint64_t> mortonKeys(const std::vector<double>& coords) {
 
 DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords,
                                      const std::vector<int>& owner, const std::vector<double>& horizon,
-                                     const std::vector<int>& block, const Influence& influence)
+                                     const std::vector<int>& block, const Influence& influence,
+                                     const std::array<double, 3>* cell)
     : comm_(comm) {
   const int me = comm_.MyPID();
   numGlobal_ = static_cast<int>(owner.size());
@@ -75,7 +77,7 @@ DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vect
   }
   std::vector<int> candidates;
   if (numOwned_ > 0) {
-    const double pad = hmax * (1.0 + 1e-9);
+    const double pad = (hmax + (cell ? halfCellDiagonal(*cell) : 0.0)) * (1.0 + 1e-9);
     for (int p = 0; p < numGlobal_; ++p) {
       if (owner[p] == me) continue;
       bool inside = true;
@@ -91,11 +93,14 @@ DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vect
   for (int p : candidates) pts.insert(pts.end(), &coords[3 * p], &coords[3 * p] + 3);
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
-  buildFamilies(pts, numOwned_, h, family_);
+  buildFamilies(pts, numOwned_, h, family_, cell);
   family_.influence.resize(family_.numBonds());
+  // Partial-volume bonds may reach half a cell beyond the horizon; omega is taken at the horizon there
+  // (omega(r > delta) is undefined for some influence functions).
   for (int i = 0; i < numOwned_; ++i)
     for (int b = family_.offsets[i]; b < family_.offsets[i + 1]; ++b)
-      family_.influence[b] = influenceValue(influence, family_.refLength[b], h[i]);
+      family_.influence[b] =
+          influenceValue(influence, cell ? std::min(family_.refLength[b], h[i]) : family_.refLength[b], h[i]);
 
   // Keep only candidates that some bond reaches; candidate order is preserved so rows stay sorted.
   std::vector<int> ghostIndex(candidates.size(), -1);

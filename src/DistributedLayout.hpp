@@ -9,6 +9,7 @@
 #include <Epetra_Map.h>
 #include <Epetra_MpiComm.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -25,9 +26,11 @@ struct BlockRange {
 class DistributedLayout {
  public:
   // Whole cloud on every rank: coords (3 per point), owner rank, horizon and block id per point; the
-  // influence function sets each bond's omega from its length and its owner's horizon.
+  // influence function sets each bond's omega from its length and its owner's horizon. cell: the grid's
+  // cell for partial-volume families (see buildFamilies), or null for whole neighbour volumes.
   DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords, const std::vector<int>& owner,
-                    const std::vector<double>& horizon, const std::vector<int>& block, const Influence& influence);
+                    const std::vector<double>& horizon, const std::vector<int>& block, const Influence& influence,
+                    const std::array<double, 3>* cell = nullptr);
 
   int numOwned() const { return numOwned_; }
   int numOverlap() const { return static_cast<int>(gids_.size()); }

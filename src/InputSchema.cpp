@@ -120,7 +120,8 @@ std::set<std::string> validateDiscretization(const PL& d, const std::string& fil
   const std::string type = getText(d, "Type", "");
   std::vector<P> common = {{"Type", T::String, true},
                            {"NeighborhoodType", T::String, false},
-                           {"Influence Function", T::String, false}};
+                           {"Influence Function", T::String, false},
+                           {"Partial Volume", T::Bool, false}};
   std::set<std::string> layers;
   if (type == "PdQuickGrid") {
     checkList(d, file, path, common, {"TensorProduct3DMeshGenerator"});
@@ -139,6 +140,9 @@ std::set<std::string> validateDiscretization(const PL& d, const std::string& fil
   } else if (type == "Text File") {
     common.push_back({"Input Mesh File", T::String, true});
     checkList(d, file, path, common, {});
+    if (d.isParameter("Partial Volume") && d.get<bool>("Partial Volume"))
+      fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "
+                       "Holes): a Text File discretization has no cells to intersect with the horizon");
   } else {
     const bool box = type == "Box With Holes";
     std::vector<P> ps = common;

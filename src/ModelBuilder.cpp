@@ -99,7 +99,8 @@ Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inp
   }
 
   std::vector<int> owner = partitionRcb(cloud.x, comm.Comm());
-  auto layout = std::make_unique<DistributedLayout>(comm, cloud.x, owner, horizon, cloud.block, cloud.influence);
+  auto layout = std::make_unique<DistributedLayout>(comm, cloud.x, owner, horizon, cloud.block, cloud.influence,
+                                                    cloud.partialVolume ? &cloud.cell : nullptr);
   const std::vector<int>& gids = layout->gids();
   std::vector<double> x(3 * gids.size()), volume(gids.size());
   for (std::size_t i = 0; i < gids.size(); ++i) {

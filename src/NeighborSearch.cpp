@@ -5,18 +5,26 @@
 #include <limits>
 #include <stdexcept>
 
+#include "PartialVolume.hpp"
+
 namespace pf {
 
 void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizon,
-                   BondFamily& family) {
+                   BondFamily& family, const std::array<double, 3>* gridCell) {
   const int n = static_cast<int>(points.size() / 3);
   family.offsets.assign(1, 0);
   family.neighbors.clear();
   family.refLength.clear();
+  family.fraction.clear();
   if (numQueries == 0) return;
   double hmax = 0.0;
   for (int i = 0; i < numQueries; ++i) hmax = std::max(hmax, horizon[i]);
   if (!(hmax > 0)) throw std::invalid_argument("buildFamilies: horizon must be positive");
+  // With partial volumes a centre up to half a cell diagonal beyond the horizon still has part of its
+  // cell inside: search that far, keep the bonds whose fraction is positive.
+  const double reach = gridCell ? halfCellDiagonal(*gridCell) : 0.0;
+  PartialVolumeTable table(gridCell ? *gridCell : std::array<double, 3>{});
+  hmax += reach;
 
   double lo[3], hi[3];
   for (int d = 0; d < 3; ++d) { lo[d] = std::numeric_limits<double>::max(); hi[d] = -lo[d]; }
@@ -58,7 +66,7 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
   std::vector<int> row;
   for (int i = 0; i < numQueries; ++i) {
     const double* xi = &points[3 * i];
-    const double h = horizon[i];
+    const double h = horizon[i] + reach;
     const double h2 = h * h * (1.0 + 1e-10);
     long cmin[3], cmax[3];
     for (int d = 0; d < 3; ++d) {
@@ -81,6 +89,11 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
     std::sort(row.begin(), row.end());
     for (int j : row) {
       const double d0 = points[3 * j] - xi[0], d1 = points[3 * j + 1] - xi[1], d2 = points[3 * j + 2] - xi[2];
+      if (gridCell) {
+        const double f = table.fraction({d0, d1, d2}, horizon[i]);
+        if (!(f > 1e-12)) continue;  // corner contacts: no measurable share
+        family.fraction.push_back(f);
+      }
       family.neighbors.push_back(j);
       family.refLength.push_back(std::sqrt(d0 * d0 + d1 * d1 + d2 * d2));
     }

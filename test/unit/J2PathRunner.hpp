@@ -63,9 +63,9 @@ struct PathResult {
 };
 
 inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, double H, double amp = 0.012,
-                          int steps = 120, const std::string& norm = "Discrete") {
+                          int steps = 120, const std::string& norm = "Discrete", bool partialVolume = false) {
   auto mat = pf::makeMaterial("Elastic Plastic Hardening", j2Values(dim, K, H), {{"Yield Normalization", norm}});
-  pf::MaterialPoint mp(*mat, kDx, ratio, kDx);
+  pf::MaterialPoint mp(*mat, kDx, ratio, kDx, partialVolume);
   const ClassicalJ2::Mode mode = dim == pf::Dimension::ThreeD       ? ClassicalJ2::Mode::ThreeD
                                  : dim == pf::Dimension::PlaneStress ? ClassicalJ2::Mode::PlaneStress
                                                                     : ClassicalJ2::Mode::PlaneStrain;

@@ -195,3 +195,46 @@ TEST(J2Equivalence, ErrorTable) {
   std::fflush(stdout);
 }
 
+
+// Partial-volume families (Discretization "Partial Volume", MaterialPoint partialVolume): each bond
+// weighted by the share of its cell inside the horizon, which makes the lattice family's fourth moment
+// nearly isotropic (test_partial_volume.cpp).
+// At delta/dx = 10 the bounds hold: 1 % in 3D and plane strain, 2 % in plane stress (measured
+// max 0.29 % everywhere except plane-stress cyclic paths with H > 0, where the von Mises stress is held
+// against the scalar-back-stress J2 as in MatchesClassicalJ2: against tensor J2 they are 1.95 % / 2.20 %,
+// the model-form gap of that test). Without partial volumes the same ratio gives 1.8 % (3D) and 4.1 %
+// (plane strain) on cyclic paths (RatioTenWithinMeasuredLatticeError).
+// At the paper's delta/dx = 3, 4, 5 (whole volumes: up to 19 %, 3.7 %, see docs/materials.md) the bounds
+// are the largest errors measured over the 12 cases of each ratio and dimension, rounded up by ~25 % (a
+// regression guard, not a physical limit): von Mises / plastic strain / onset in %.
+TEST(J2Equivalence, PartialVolumeFamilies) {
+  struct Bound { double ratio; Dimension dim; double vm, other; };
+  const Bound bounds[] = {{3, Dimension::ThreeD, 1.1, 0.75},     {3, Dimension::PlaneStrain, 1.9, 1.9},
+                          {3, Dimension::PlaneStress, 3.1, 1.9},  {4, Dimension::ThreeD, 0.5, 0.35},
+                          {4, Dimension::PlaneStrain, 0.8, 0.7},  {4, Dimension::PlaneStress, 2.9, 0.7},
+                          {5, Dimension::ThreeD, 0.35, 0.2},     {5, Dimension::PlaneStrain, 0.5, 0.4},
+                          {5, Dimension::PlaneStress, 2.8, 0.4},  {10, Dimension::ThreeD, 1.0, 1.0},
+                          {10, Dimension::PlaneStrain, 1.0, 1.0}, {10, Dimension::PlaneStress, 2.0, 2.0}};
+  std::printf("\nPartial Volume, Discrete normalisation (%%): max |vm - vm_J2|/sy, max |alpha - alpha_J2|/max "
+              "alpha_J2, onset; plane stress also vs scalar-q J2\n");
+  std::printf("| ratio | dim | hardening | path | von Mises | eq. plastic strain | yield onset | Newton its | "
+              "von Mises vs scalar-q J2 |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (const Bound& b : bounds)
+    for (const Hardening& h : kHardening)
+      for (Path path : {Path::Uniaxial, Path::Cyclic, Path::Shear}) {
+        const PathResult r = runPath(b.dim, b.ratio, path, h.K, h.H, 0.012, 120, "Discrete", true);
+        char sc[16] = "-";
+        if (r.vmErrScalar >= 0) std::snprintf(sc, sizeof sc, "%.2f", 100 * r.vmErrScalar);
+        std::printf("| %g | %s | %s | %s | %.2f | %.2f | %.2f | %d | %s |\n", b.ratio, dimName(b.dim), h.name,
+                    pathName(path), 100 * r.vmErr, 100 * r.alphaErr, 100 * r.onsetErr, r.maxIterations, sc);
+        SCOPED_TRACE(std::string(dimName(b.dim)) + " " + h.name + " " + pathName(path) + " ratio " +
+                     std::to_string(b.ratio));
+        const bool scalarRef = b.dim == Dimension::PlaneStress && path == Path::Cyclic && h.H > 0;
+        EXPECT_LT(100 * ((scalarRef && b.ratio == 10) ? r.vmErrScalar : r.vmErr), b.vm);
+        EXPECT_LT(100 * r.alphaErr, b.other);
+        EXPECT_LT(100 * r.onsetErr, b.other);
+        EXPECT_LE(r.maxIterations, 10);
+      }
+  std::fflush(stdout);
+}
