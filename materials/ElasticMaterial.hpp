@@ -1,6 +1,8 @@
 #pragma once
 // "Elastic": the linear ordinary state-based peridynamic solid (Silling et al. 2007; Pirzadeh et al.
-// 2024 Eqs. 3-13) in 3D, plane stress and plane strain. Declares the node field Dilatation.
+// 2024 Eqs. 3-13) in 3D, plane stress and plane strain. Declares the node field Dilatation and, in 3D,
+// Stored_Elastic_Energy = V_i W_i with Peridigm's energy density W = kappa theta^2/2 + (15 mu/(2 m))
+// sum omega e^d e^d V_j (computed in an extra bond pass only once an output asks for it).
 #include "Material.hpp"
 #include "MaterialRegistry.hpp"
 #include "OsbConstants.hpp"
@@ -19,6 +21,7 @@ class ElasticMaterial : public Material {
   bool hasForceDerivative() const override { return true; }
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
+  void enableOutput(const std::string& name) const override;
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 
@@ -32,6 +35,7 @@ class ElasticMaterial : public Material {
   double thickness_ = 0.0;
   double density_;
   OsbConstants osb_;
+  mutable bool energyWanted_ = false;  // set by enableOutput("Stored_Elastic_Energy") before the run
 };
 
 }  // namespace pf

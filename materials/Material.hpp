@@ -50,6 +50,11 @@ class Material {
   // the implicit solver. Elastic moduli are enough; the Krylov solve applies the exact operator.
   virtual void pairStiffness(const FamilyView& fam, double* c) const = 0;
 
+  // Called before the run for each output field of this material that an output list will write, so a
+  // model can skip work for fields nobody reads (e.g. an energy pass). Default: every field is always
+  // computed. const because blocks share the material; the flag it sets must not change results.
+  virtual void enableOutput(const std::string& name) const {}
+
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;
 };

@@ -62,9 +62,9 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
   return {it, nr.residual, tol};
 }
 
-void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                     StepObserver& observer) {
-  runLoadSteps(model, u, v, t0, t1, opt_.loadSteps, observer,
+  runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double, double t) {
                  const std::vector<double> uStepStart(u);
                  predictStep(model, t, u, duPrev);

@@ -9,7 +9,6 @@
 namespace pf {
 
 struct AdrOptions {
-  int loadSteps = 1;
   double relativeTolerance = 1e-6;  // of the reaction / applied-load norm
   double absoluteTolerance = 0.0;   // on the residual force-density norm (Peridigm QuasiStatic meaning)
   int maxIterations = 100000;
@@ -21,7 +20,7 @@ class AdrSolver : public Solver {
  public:
   explicit AdrSolver(AdrOptions o) : opt_(o) {}
   std::string name() const override { return "Adaptive Dynamic Relaxation"; }
-  void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+  void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
 
   // Relaxes u (prescribed values at t already set, free ones predicted) to equilibrium at time t.

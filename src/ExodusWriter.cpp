@@ -40,13 +40,15 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
                            const std::vector<int>& blockIdPerNode, bool planar,
                            const std::vector<std::string>& nodalVectorNames,
                            const std::vector<std::string>& nodalScalarNames,
-                           const std::vector<std::string>& elementScalarNames)
+                           const std::vector<std::string>& elementScalarNames,
+                           const std::vector<std::string>& globalNames)
     : filename_(filename),
       numNodes_(blockIdPerNode.size()),
       planar_(planar),
       vectorNames_(nodalVectorNames),
       scalarNames_(nodalScalarNames),
-      elementNames_(elementScalarNames) {
+      elementNames_(elementScalarNames),
+      globalNames_(globalNames) {
   if (coords.size() != 3 * numNodes_)
     throw std::runtime_error("ExodusWriter(" + filename + "): coords has " + std::to_string(coords.size()) +
                              " entries, expected 3 * " + std::to_string(numNodes_));
@@ -67,6 +69,13 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
     checkName(filename, n);
     if (!seen.insert(n).second)
       throw std::runtime_error("ExodusWriter(" + filename + "): duplicate element variable '" + n + "'");
+  }
+
+  seen.clear();
+  for (const auto& n : globalNames_) {
+    checkName(filename, n);
+    if (!seen.insert(n).second)
+      throw std::runtime_error("ExodusWriter(" + filename + "): duplicate global variable '" + n + "'");
   }
 
   for (int b : blockIdPerNode) {
@@ -144,6 +153,14 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
                                static_cast<int>(elementNames_.size()), truth.data()),
             "ex_put_truth_table");
     }
+    if (!globalNames_.empty()) {
+      check(ex_put_variable_param(exoid_, EX_GLOBAL, static_cast<int>(globalNames_.size())),
+            "ex_put_variable_param(global)");
+      auto names = globalNames_;
+      auto ptrs = cstrings(names);
+      check(ex_put_variable_names(exoid_, EX_GLOBAL, static_cast<int>(ptrs.size()), ptrs.data()),
+            "ex_put_variable_names(global)");
+    }
     check(ex_update(exoid_), "ex_update");
   } catch (...) {
     ex_close(exoid_);
@@ -158,7 +175,8 @@ ExodusWriter::~ExodusWriter() {
 
 void ExodusWriter::writeStep(double time, const std::map<std::string, std::vector<double>>& nodalVectors,
                              const std::map<std::string, std::vector<double>>& nodalScalars,
-                             const std::map<std::string, std::vector<double>>& elementScalars) {
+                             const std::map<std::string, std::vector<double>>& elementScalars,
+                             const std::map<std::string, double>& globals) {
   auto lookup = [&](const std::map<std::string, std::vector<double>>& m, const std::string& name,
                     std::size_t expected, const char* kind) -> const std::vector<double>& {
     auto it = m.find(name);
@@ -175,6 +193,13 @@ void ExodusWriter::writeStep(double time, const std::map<std::string, std::vecto
   for (const auto& v : vectorNames_) lookup(nodalVectors, v, 3 * numNodes_, "nodal vector");
   for (const auto& s : scalarNames_) lookup(nodalScalars, s, numNodes_, "nodal scalar");
   for (const auto& e : elementNames_) lookup(elementScalars, e, numNodes_, "element scalar");
+  std::vector<double> globalValues;
+  for (const auto& g : globalNames_) {
+    auto it = globals.find(g);
+    if (it == globals.end())
+      throw std::runtime_error("ExodusWriter(" + filename_ + "): writeStep is missing global '" + g + "'");
+    globalValues.push_back(it->second);
+  }
 
   const int step = step_ + 1;
   check(ex_put_time(exoid_, step, &time), "ex_put_time");
@@ -205,6 +230,9 @@ void ExodusWriter::writeStep(double time, const std::map<std::string, std::vecto
     }
     buf.resize(numNodes_);
   }
+  if (!globalValues.empty())
+    check(ex_put_var(exoid_, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(globalValues.size()), globalValues.data()),
+          "ex_put_var(global)");
   // Sync every step: a run killed later still leaves a readable file with the steps so far.
   check(ex_update(exoid_), "ex_update");
   step_ = step;

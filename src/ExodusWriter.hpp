@@ -24,18 +24,20 @@ class ExodusWriter {
                const std::vector<int>& blockIdPerNode, bool planar,
                const std::vector<std::string>& nodalVectorNames,
                const std::vector<std::string>& nodalScalarNames,
-               const std::vector<std::string>& elementScalarNames);
+               const std::vector<std::string>& elementScalarNames,
+               const std::vector<std::string>& globalNames = {});
   ~ExodusWriter();
 
   ExodusWriter(const ExodusWriter&) = delete;
   ExodusWriter& operator=(const ExodusWriter&) = delete;
 
   // Every declared name must be present with the right length (3*N for vectors, N otherwise);
-  // element scalars are given per node in global order. Extra map entries are ignored so the
+  // element scalars are given per node in global order; globals one value each. Extra map entries are ignored so the
   // caller can pass one big field map. The file is synced after each step.
   void writeStep(double time, const std::map<std::string, std::vector<double>>& nodalVectors,
                  const std::map<std::string, std::vector<double>>& nodalScalars,
-                 const std::map<std::string, std::vector<double>>& elementScalars);
+                 const std::map<std::string, std::vector<double>>& elementScalars,
+                 const std::map<std::string, double>& globals = {});
 
   int numStepsWritten() const { return step_; }
   const std::string& filename() const { return filename_; }
@@ -48,7 +50,7 @@ class ExodusWriter {
   int step_ = 0;
   std::size_t numNodes_ = 0;
   bool planar_ = false;
-  std::vector<std::string> vectorNames_, scalarNames_, elementNames_;
+  std::vector<std::string> vectorNames_, scalarNames_, elementNames_, globalNames_;  // globals: EX_GLOBAL
   std::vector<int> blockIds_;                          // sorted distinct ids
   std::vector<std::vector<std::size_t>> blockNodes_;  // per block: node indices (0-based)
 };

@@ -1,6 +1,8 @@
 #include "InputSchema.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -242,6 +244,12 @@ void validateMaterialsAndBlocks(const PL& p, const std::string& file) {
     const std::vector<std::string> names = splitWords(getText(b, "Block Names", ""));
     if (names.empty()) fail(file, bpath, "'Block Names' is empty");
     for (const std::string& n : names) {
+      // Peridigm's "default": every block of the discretization no other group names (Simulation expands it).
+      if (n == "default") {
+        if (names.size() != 1) fail(file, bpath, "'Block Names' = 'default' stands alone (no other names with it)");
+        if (!seen.insert(n).second) fail(file, bpath, "'Block Names': 'default' is given by two block groups");
+        continue;
+      }
       bool ok = n.size() > 6 && n.compare(0, 6, "block_") == 0 &&
                 n.find_first_not_of("0123456789", 6) == std::string::npos && std::stol(n.substr(6)) >= 1;
       if (!ok) fail(file, bpath, "'Block Names' entry '" + n + "' is not of the form block_<positive integer>");
@@ -314,17 +322,45 @@ std::set<std::string> validateBoundaryConditions(const PL& bcs, const std::strin
   return sets;
 }
 
-void validateSolver(const PL& s, const std::string& file) {
-  const std::string path = "Solver";
+// path: the solver list's name ("Solver", "Solver1", ...).
+void validateSolver(const PL& s, const std::string& file, const std::string& path) {
   const std::vector<std::string> solvers = {"Verlet", "Adaptive Dynamic Relaxation", "QuasiStatic", "NOXQuasiStatic"};
+  // Peridigm's QuasiStatic may list its load times ("Time Steps") instead of Final Time and a step count.
+  const bool timeList = s.isSublist("QuasiStatic") && s.sublist("QuasiStatic").isParameter("Time Steps") &&
+                        !s.isParameter("Final Time");
   checkList(s, file, path,
-            {{"Verbose", T::Bool, false}, {"Initial Time", T::Double, false}, {"Final Time", T::Double, true}},
+            {{"Verbose", T::Bool, false}, {"Initial Time", T::Double, false}, {"Final Time", T::Double, !timeList}},
             solvers);
-  const double t0 = getNumber(s, "Initial Time", 0.0), t1 = getNumber(s, "Final Time");
-  if (!(t1 > t0)) fail(file, path, "'Final Time' (" + num(t1) + ") must exceed 'Initial Time' (" + num(t0) + ")");
   int count = 0;
   for (const std::string& n : solvers) count += s.isSublist(n) ? 1 : 0;
   if (count != 1) fail(file, path, "exactly one solver sub-list is required, one of " + joinNames(solvers));
+  if (timeList) {
+    const std::string qp = path + "/QuasiStatic";
+    const PL& q = s.sublist("QuasiStatic");
+    if (!q.getEntry("Time Steps").isType<std::string>()) fail(file, qp, "'Time Steps' must be a string of times");
+    if (s.isParameter("Initial Time"))
+      fail(file, path, "'Initial Time' with 'Time Steps': the first of the 'Time Steps' is the initial time");
+    if (q.isParameter("Number of Load Steps"))
+      fail(file, qp, "give 'Time Steps' or 'Number of Load Steps' (with the list's 'Final Time'), not both");
+    std::vector<double> times;
+    for (const std::string& w : splitWords(q.get<std::string>("Time Steps"))) {
+      std::size_t used = 0;
+      double t = 0;
+      try {
+        t = std::stod(w, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != w.size() || !std::isfinite(t)) fail(file, qp, "'Time Steps' entry '" + w + "' is not a number");
+      if (!times.empty() && !(t > times.back()))
+        fail(file, qp, "'Time Steps' must increase (" + num(t) + " follows " + num(times.back()) + ")");
+      times.push_back(t);
+    }
+    if (times.size() < 2) fail(file, qp, "'Time Steps' needs the initial time and at least one load time");
+  } else {
+    const double t0 = getNumber(s, "Initial Time", 0.0), t1 = getNumber(s, "Final Time");
+    if (!(t1 > t0)) fail(file, path, "'Final Time' (" + num(t1) + ") must exceed 'Initial Time' (" + num(t0) + ")");
+  }
   if (s.isSublist("Verlet")) {
     const PL& v = s.sublist("Verlet");
     checkList(v, file, path + "/Verlet", {{"Fixed dt", T::Double, false}, {"Safety Factor", T::Double, false}}, {});
@@ -347,9 +383,9 @@ void validateSolver(const PL& s, const std::string& file) {
     const std::string qp = path + "/QuasiStatic";
     const PL& q = s.sublist("QuasiStatic");
     checkList(q, file, qp,
-              {{"Number of Load Steps", T::Int, true}, {"Absolute Tolerance", T::Double, false},
-               {"Relative Tolerance", T::Double, false}, {"Maximum Solver Iterations", T::Int, false},
-               {"Verbose", T::Bool, false}},
+              {{"Number of Load Steps", T::Int, !timeList}, {"Time Steps", T::String, false},
+               {"Absolute Tolerance", T::Double, false}, {"Relative Tolerance", T::Double, false},
+               {"Maximum Solver Iterations", T::Int, false}, {"Verbose", T::Bool, false}},
               {});
     atLeastOne(q, "Number of Load Steps", file, qp);
     atLeastOne(q, "Maximum Solver Iterations", file, qp);
@@ -397,15 +433,22 @@ std::vector<std::string> commaList(const PL& o, const std::string& param, const 
   return out;
 }
 
-// bcs: the deck's Boundary Conditions list, or null if it has none.
-void validateOutput(const PL& o, const std::string& file, const std::set<std::string>& nodeSets, const PL* bcs) {
-  const std::string path = "Output";
+// bcs: the deck's Boundary Conditions list, or null if it has none. path: the list's name ("Output",
+// "Output1", ...).
+void validateOutput(const PL& o, const std::string& file, const std::set<std::string>& nodeSets, const PL* bcs,
+                    const std::string& path) {
   checkList(o, file, path,
             {{"Output File Type", T::String, false}, {"Output Format", T::String, false},
              {"Output Filename", T::String, true}, {"Output Frequency", T::Int, false},
+             {"Initial Output Step", T::Int, false}, {"Final Output Step", T::Int, false},
              {"Parallel Write", T::Bool, false}, {"Reactions", T::String, false},
              {"Reaction Names", T::String, false}, {"Applied Displacement", T::String, false}},
             {"Output Variables", "Probes"});
+  atLeastOne(o, "Initial Output Step", file, path);
+  atLeastOne(o, "Final Output Step", file, path);
+  if (o.isParameter("Initial Output Step") && o.isParameter("Final Output Step") &&
+      getInteger(o, "Final Output Step", 1) + 1 < getInteger(o, "Initial Output Step", 1))
+    fail(file, path, "'Final Output Step' + 1 is below 'Initial Output Step': nothing would be written");
   if (o.isParameter("Reaction Names")) {
     if (!o.isParameter("Reactions")) fail(file, path, "'Reaction Names' needs 'Reactions' (one name per entry)");
     const std::vector<std::string> sets = commaList(o, "Reactions", file, path);
@@ -449,8 +492,7 @@ void validateOutput(const PL& o, const std::string& file, const std::set<std::st
     const PL& v = o.sublist("Output Variables");
     // Peridigm fields its regression decks request that Periforge does not compute: named as such
     // rather than as unknown, so the deck's author knows the request was understood.
-    for (const char* n : {"Stored_Elastic_Energy", "Strain_Energy", "Global_Kinetic_Energy", "Horizon", "Radius",
-                          "Neighborhood_Volume"})
+    for (const char* n : {"Strain_Energy", "Radius", "Neighborhood_Volume"})
       if (v.isParameter(n))
         fail(file, path + "/Output Variables", std::string("Peridigm's output variable '") + n +
                                                    "' is not supported by Periforge");
@@ -481,10 +523,29 @@ void validateOutput(const PL& o, const std::string& file, const std::set<std::st
 const std::vector<std::string>& knownOutputVariables() {
   static const std::vector<std::string> names = {
       "Displacement", "Velocity", "Force_Density", "Force", "Dilatation", "Weighted_Volume", "Element_Id",
-      "Proc_Num", "Number_Of_Neighbors", "Volume", "Model_Coordinates", "Coordinates", "Acceleration", "Damage",
+      "Proc_Num", "Number_Of_Neighbors", "Volume", "Horizon", "Model_Coordinates", "Coordinates", "Acceleration", "Damage",
       // material outputs
-      "Von_Mises_Stress", "Signed_Von_Mises_Stress", "Equivalent_Plastic_Strain", "Lambda", "Back_Stress"};
+      "Von_Mises_Stress", "Signed_Von_Mises_Stress", "Equivalent_Plastic_Strain", "Lambda", "Back_Stress",
+      "Stored_Elastic_Energy",
+      // global (Exodus global variable)
+      "Global_Kinetic_Energy"};
   return names;
+}
+
+std::vector<std::string> numberedLists(const PL& deck, const std::string& stem) {
+  std::vector<std::string> out;
+  if (deck.isSublist(stem)) out.push_back(stem);
+  std::vector<std::pair<long, std::string>> numbered;
+  for (auto it = deck.begin(); it != deck.end(); ++it) {
+    const std::string& n = deck.name(it);
+    if (deck.entry(it).isList() && n.size() > stem.size() && n.size() < stem.size() + 10 &&
+        n.compare(0, stem.size(), stem) == 0 && n[stem.size()] != '0' &&
+        n.find_first_not_of("0123456789", stem.size()) == std::string::npos)
+      numbered.push_back({std::stol(n.substr(stem.size())), n});
+  }
+  std::sort(numbered.begin(), numbered.end());
+  for (const auto& e : numbered) out.push_back(e.second);
+  return out;
 }
 
 double getNumber(const PL& l, const std::string& name, double fallback) {
@@ -600,28 +661,44 @@ MaterialInput materialInputFor(const PL& m, const std::string& materialName, con
 }
 
 void validateInput(const PL& p, const std::string& inputFile) {
-  // Peridigm runs "Solver1", "Solver2", ... in sequence and writes one file per "Output1", "Output2", ...;
-  // Periforge has one solver and one output list, so such decks are told so instead of "unknown sub-list".
+  // Peridigm runs "Solver1", "Solver2", ... in sequence and writes one file per "Output1", "Output2", ...
+  // (each checked like "Solver" / "Output" below).
+  std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions"};
+  const std::vector<std::string> solverLists = numberedLists(p, "Solver"), outputLists = numberedLists(p, "Output");
+  for (const std::string& n : solverLists) tops.push_back(n);
+  for (const std::string& n : outputLists) tops.push_back(n);
+  if (!p.isSublist("Solver")) tops.push_back("Solver");  // so that a missing one is reported as such below
+  if (!p.isSublist("Output")) tops.push_back("Output");
   for (auto it = p.begin(); it != p.end(); ++it) {
     const std::string& n = p.name(it);
     for (const std::string stem : {"Solver", "Output"})
       if (p.entry(it).isList() && n.size() > stem.size() && n.compare(0, stem.size(), stem) == 0 &&
-          n.find_first_not_of("0123456789", stem.size()) == std::string::npos)
-        fail(inputFile, "top level", "'" + n + "': Peridigm's numbered " + stem + " lists (" + stem + "1, " + stem +
-                                         "2, ...) are not supported by Periforge; give one '" + stem + "' list");
+          n.find_first_not_of("0123456789", stem.size()) == std::string::npos &&
+          (n[stem.size()] == '0' || std::find(tops.begin(), tops.end(), n) == tops.end()))
+        fail(inputFile, "top level", "'" + n + "': a numbered " + stem + " list is " + stem +
+                                         "<n> with n = 1, 2, ... (no leading zero)");
   }
-  checkList(p, inputFile, "top level", {{"Verbose", T::Bool, false}},
-            {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Solver", "Output"});
+  checkList(p, inputFile, "top level", {{"Verbose", T::Bool, false}}, tops);
+  if (p.isSublist("Solver") && solverLists.size() > 1)
+    fail(inputFile, "top level", "give either one 'Solver' list or numbered ones ('" + solverLists[1] +
+                                     "', ...), not both");
+  if (solverLists.empty()) fail(inputFile, "top level", "missing required sub-list 'Solver' (or 'Solver1', ...)");
   const std::set<std::string> generated =
       validateDiscretization(requireSublist(p, "Discretization", inputFile, "top level"), inputFile);
   validateMaterialsAndBlocks(p, inputFile);
   std::set<std::string> nodeSets = generated;
   if (p.isSublist("Boundary Conditions"))
     nodeSets = validateBoundaryConditions(p.sublist("Boundary Conditions"), inputFile, generated);
-  validateSolver(requireSublist(p, "Solver", inputFile, "top level"), inputFile);
-  if (p.isSublist("Output"))
-    validateOutput(p.sublist("Output"), inputFile, nodeSets,
-                   p.isSublist("Boundary Conditions") ? &p.sublist("Boundary Conditions") : nullptr);
+  for (const std::string& n : solverLists) validateSolver(p.sublist(n), inputFile, n);
+  std::map<std::string, std::string> files;  // Output Filename -> list
+  for (const std::string& n : outputLists) {
+    validateOutput(p.sublist(n), inputFile, nodeSets,
+                   p.isSublist("Boundary Conditions") ? &p.sublist("Boundary Conditions") : nullptr, n);
+    const std::string f = getText(p.sublist(n), "Output Filename", "");
+    if (files.count(f))
+      fail(inputFile, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");
+    files[f] = n;
+  }
   // Layers default to the horizon, so a deck with layers needs a positive width from somewhere.
   const PL& d = p.sublist("Discretization");
   if (!generated.empty() && !d.isParameter("Layer Width") && !(maxBlockHorizon(p) > 0.0))

@@ -23,6 +23,11 @@ double maxBlockHorizon(const Teuchos::ParameterList& deck);
 // Output variable names accepted in "Output Variables" and in probe "Variables".
 const std::vector<std::string>& knownOutputVariables();
 
+// The top-level lists named stem ("Solver", "Output"): the plain one if present, then Peridigm's numbered
+// stem1, stem2, ... in increasing number. Validated by validateInput (a deck gives "Solver" or numbered
+// solver lists, not both).
+std::vector<std::string> numberedLists(const Teuchos::ParameterList& deck, const std::string& stem);
+
 // Typed access for code that runs after validation. Numbers written as int where a double is expected
 // (common in YAML) are accepted.
 double getNumber(const Teuchos::ParameterList& l, const std::string& name, double fallback);

@@ -45,21 +45,22 @@ void predictStep(const Model& model, double t, std::vector<double>& u, const std
     if (!fixed[k]) u[k] += alpha * duPrev[k];
 }
 
-void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1, int steps,
+void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double)>& solveStep) {
   using Clock = std::chrono::steady_clock;
   const int n = model.numDofs();
   const bool root = model.layout().rank() == 0;
   std::vector<double> f(n), duPrev(n, 0.0);
+  const double t0 = times.front();
+  const int steps = static_cast<int>(times.size()) - 1;
   model.applyPrescribed(t0, u.data());
   model.internalForce(u.data(), f.data());
   std::fill(v.begin(), v.end(), 0.0);
   observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
-  const double dt = (t1 - t0) / steps;
   for (int step = 1; step <= steps; ++step) {
     const auto start = Clock::now();
-    const double tA = t0 + (t1 - t0) * (step - 1) / steps, tB = t0 + (t1 - t0) * step / steps;
+    const double tA = times[step - 1], tB = times[step], dt = tB - tA;
     const StepStats s = solveStep(u, duPrev, tA, tB);
     model.internalForce(u.data(), f.data());  // f for output; the state is committed already
     for (int k = 0; k < n; ++k) v[k] = duPrev[k] / dt;

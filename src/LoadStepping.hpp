@@ -29,11 +29,11 @@ struct StepStats {
   double residual = 0, tolerance = 0;
 };
 
-// The quasi-static load-step loop both implicit solvers share: reports the initial state, then for each of
-// `steps` equal steps calls solveStep(u, duPrev, tA, tB), which must leave u converged at tB, the state
-// committed and duPrev = the step's increment; prints one progress line, reports the step with the
-// load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
-void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1, int steps,
+// The quasi-static load-step loop both implicit solvers share: reports the initial state at times[0], then
+// for each step k = 1 .. times.size()-1 calls solveStep(u, duPrev, times[k-1], times[k]), which must leave u
+// converged at times[k], the state committed and duPrev = the step's increment; prints one progress line,
+// reports the step with the load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
+void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>& u, std::vector<double>& duPrev, double tA,
                                                 double tB)>& solveStep);

@@ -430,9 +430,9 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   return Outcome{true, r.iterations, 0, r.residual, r.tolerance};
 }
 
-void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
-                               StepObserver& observer) {
-  runLoadSteps(model, u, v, t0, t1, opt_.loadSteps, observer,
+void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
+                               const std::vector<double>& times, StepObserver& observer) {
+  runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB) {
                  const Outcome o = advance(model, u, duPrev, tA, tB, 0);
                  return StepStats{o.iterations, o.linearIterations, o.residual, o.tolerance};

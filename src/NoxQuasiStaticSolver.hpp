@@ -16,7 +16,6 @@
 namespace pf {
 
 struct NoxOptions {
-  int loadSteps = 1;
   double relativeTolerance = 1e-10;  // of the load scale (reaction + body force), as ADR's
   double absoluteTolerance = 0.0;    // on the residual force-density norm (Peridigm's unit)
   int maxIterations = 30;            // Newton iterations per (sub)step
@@ -35,7 +34,7 @@ class NoxQuasiStaticSolver : public Solver {
  public:
   explicit NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)) {}
   std::string name() const override { return "NOXQuasiStatic (Newton-Krylov)"; }
-  void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+  void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
 
  private:

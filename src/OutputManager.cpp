@@ -17,7 +17,9 @@ const std::vector<std::string> kVectors = {"Displacement", "Velocity", "Force_De
                                            "Model_Coordinates", "Coordinates", "Acceleration"};
 // Scalars the core itself provides; everything else must be a material output field.
 const std::vector<std::string> kCoreScalars = {"Weighted_Volume", "Element_Id", "Proc_Num", "Number_Of_Neighbors",
-                                               "Volume"};
+                                               "Volume", "Horizon"};
+// Whole-body scalars written as Exodus global variables.
+const std::vector<std::string> kGlobals = {"Global_Kinetic_Energy"};
 
 // Peridigm requests "Element_Id" but writes the variable as "ID"; exodiff against its gold files needs the same.
 std::string exodusName(const std::string& var) { return var == "Element_Id" ? "ID" : var; }
@@ -28,35 +30,52 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 
 }  // namespace
 
-OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::string& inputFile, Problem& problem)
+OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::string& listName,
+                             const std::string& inputFile, Problem& problem)
     : pb_(problem), model_(*problem.model) {
   const bool root = model_.layout().rank() == 0;
   const StateStore& state = model_.state();
   // Peridigm's Verlet integrator defines the acceleration (f + b)/rho it steps with; the quasi-static
-  // solvers have none, so asking for it there is an error rather than a field of zeros.
-  const bool dynamic = input.isSublist("Solver") && input.sublist("Solver").isSublist("Verlet");
+  // solvers have none, so asking for it there is an error rather than a field of zeros. With several
+  // solver lists (Solver1, Solver2, ...) one Verlet among them is enough.
+  bool dynamic = false;
+  for (auto it = input.begin(); it != input.end(); ++it) {
+    const std::string& n = input.name(it);
+    if (input.entry(it).isList() && n.compare(0, 6, "Solver") == 0 && input.sublist(n).isSublist("Verlet"))
+      dynamic = true;
+  }
   auto checkVariable = [&](const std::string& var, const std::string& where) {
     if (var == "Acceleration" && !dynamic)
       throw InputError(inputFile + ": " + where + ": 'Acceleration' is only written by the Verlet solver");
     if (contains(kVectors, var) || contains(kCoreScalars, var)) return;
-    if (state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node) return;
+    if (state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node) {
+      for (const BlockModel& b : model_.blocks()) b.material->enableOutput(var);
+      return;
+    }
     throw InputError(inputFile + ": " + where + ": '" + var + "' is not computed by any material of this run");
   };
 
-  if (input.isSublist("Output")) {
-    const Teuchos::ParameterList& out = input.sublist("Output");
+  if (input.isSublist(listName)) {
+    const std::string& L = listName;
+    const Teuchos::ParameterList& out = input.sublist(listName);
     const std::string stem = getText(out, "Output Filename", "periforge");
     exodus_ = getText(out, "Output File Type", "ExodusII") == "ExodusII";
     exodusName_ = stem + ".e";
     historyName_ = stem + ".csv";
     frequency_ = getInteger(out, "Output Frequency", 1);
-    if (frequency_ < 1) throw InputError(inputFile + ": Output: 'Output Frequency' must be at least 1");
+    if (frequency_ < 1) throw InputError(inputFile + ": " + L + ": 'Output Frequency' must be at least 1");
+    first_ = getInteger(out, "Initial Output Step", 1);
+    last_ = getInteger(out, "Final Output Step", 0);
     if (out.isSublist("Output Variables")) {
       const Teuchos::ParameterList& vars = out.sublist("Output Variables");
       for (auto it = vars.begin(); it != vars.end(); ++it) {
         const std::string var = vars.name(it);
         if (!getFlag(vars, var, false)) continue;
-        checkVariable(var, "Output/Output Variables");
+        if (contains(kGlobals, var)) {
+          globals_.push_back(var);
+          continue;
+        }
+        checkVariable(var, L + "/Output Variables");
         (contains(kVectors, var) ? nodalVectors_ : elementScalars_).push_back(var);
       }
     }
@@ -75,8 +94,8 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
           if (d < bestD) { bestD = d; best = q; }
         }
         Probe probe{name, -1, splitWords(getText(p, "Variables", ""))};
-        if (probe.variables.empty()) throw InputError(inputFile + ": Output/Probes/" + name + ": 'Variables' is empty");
-        for (const std::string& var : probe.variables) checkVariable(var, "Output/Probes/" + name);
+        if (probe.variables.empty()) throw InputError(inputFile + ": " + L + "/Probes/" + name + ": 'Variables' is empty");
+        for (const std::string& var : probe.variables) checkVariable(var, L + "/Probes/" + name);
         const std::vector<int>& gids = model_.layout().gids();
         for (int i = 0; i < model_.numOwned(); ++i)
           if (gids[i] == best) probe.local = i;
@@ -100,11 +119,11 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
     std::vector<std::string> labels = sets;
     if (out.isParameter("Reaction Names")) labels = commaList("Reaction Names");
     if (labels.size() != sets.size())
-      throw InputError(inputFile + ": Output: 'Reaction Names' needs one name per entry of 'Reactions'");
+      throw InputError(inputFile + ": " + L + ": 'Reaction Names' needs one name per entry of 'Reactions'");
     for (std::size_t k = 0; k < sets.size(); ++k) {
       const std::string& s = sets[k];
       auto it = pb_.nodeSets.find(s);
-      if (it == pb_.nodeSets.end()) throw InputError(inputFile + ": Output: 'Reactions' names unknown node set '" + s + "'");
+      if (it == pb_.nodeSets.end()) throw InputError(inputFile + ": " + L + ": 'Reactions' names unknown node set '" + s + "'");
       Reaction r{s, labels[k], {}};
       const std::vector<int>& gids = model_.layout().gids();
       std::vector<char> in(pb_.cloud.size(), 0);
@@ -118,12 +137,12 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
       const Teuchos::ParameterList* bcs =
           input.isSublist("Boundary Conditions") ? &input.sublist("Boundary Conditions") : nullptr;
       if (!bcs || !bcs->isSublist(bc) || getText(bcs->sublist(bc), "Type", "") != "Prescribed Displacement")
-        throw InputError(inputFile + ": Output: 'Applied Displacement' = '" + bc +
+        throw InputError(inputFile + ": " + L + ": 'Applied Displacement' = '" + bc +
                          "' is not a Prescribed Displacement condition");
       applied_ = std::make_shared<Expression>(scalarAsText(bcs->sublist(bc).getEntry("Value")),
                                               inputFile + ": Boundary Conditions/" + bc + "/Value");
       if (applied_->dependsOnSpace())
-        throw InputError(inputFile + ": Output: 'Applied Displacement' = '" + bc + "': its Value depends on x, y or z");
+        throw InputError(inputFile + ": " + L + ": 'Applied Displacement' = '" + bc + "': its Value depends on x, y or z");
     }
   }
   if (historyName_.empty()) return;  // no Output list: nothing is written
@@ -148,8 +167,13 @@ OutputManager::OutputManager(const Teuchos::ParameterList& input, const std::str
     if (exodus_) {
       std::vector<std::string> scalars, elements;
       for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
-      writer_ = std::make_unique<ExodusWriter>(exodusName_, pb_.cloud.x, pb_.cloud.block, pb_.cloud.planar,
-                                               nodalVectors_, scalars, elements);
+      if (nodalVectors_.empty() && elements.empty() && !globals_.empty())
+        // Peridigm's file for global data only: one dummy node at the origin in one one-element block.
+        writer_ = std::make_unique<ExodusWriter>(exodusName_, std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
+                                                 false, nodalVectors_, scalars, elements, globals_);
+      else
+        writer_ = std::make_unique<ExodusWriter>(exodusName_, pb_.cloud.x, pb_.cloud.block, pb_.cloud.planar,
+                                                 nodalVectors_, scalars, elements, globals_);
     }
   }
   bodyForce_.assign(model_.numDofs(), 0.0);
@@ -173,6 +197,9 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   if (var == "Proc_Num") return model_.layout().rank();
   if (var == "Number_Of_Neighbors") return model_.numNeighbors(i);
   if (var == "Volume") return model_.volume()[i];
+  if (var == "Horizon")  // the horizon of the node's block
+    for (const BlockModel& b : model_.blocks())
+      if (i >= b.begin && i < b.end) return b.horizon;
   return model_.state().committed(var)[i];
 }
 
@@ -186,7 +213,9 @@ std::vector<double> OutputManager::ownedField(const std::string& var, int ncomp,
 
 void OutputManager::onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
                            const std::vector<double>& f) {
-  if (historyName_.empty() || report.step % frequency_ != 0) return;
+  if (historyName_.empty()) return;
+  ++count_;
+  if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % frequency_ != 0) return;
   const bool root = model_.layout().rank() == 0;
   const Epetra_MpiComm& comm = model_.layout().comm();
 
@@ -207,13 +236,21 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
   std::vector<double> global(local.size());
   if (!local.empty()) comm.SumAll(local.data(), global.data(), static_cast<int>(local.size()));
   if (root) {
-    std::vector<double> row = {report.time, static_cast<double>(report.step)};
+    std::vector<double> row = {report.time, static_cast<double>(count_ - 1)};
     if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));
     row.insert(row.end(), global.begin(), global.end());
     history_->writeRow(row);
   }
 
   if (!exodus_) return;
+  std::map<std::string, double> globals;
+  for (const std::string& var : globals_) {
+    double ke = 0.0;  // Global_Kinetic_Energy = sum 1/2 rho V |v|^2
+    for (int i = 0; i < model_.numOwned(); ++i)
+      ke += 0.5 * model_.density()[i] * model_.volume()[i] *
+            (v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
+    globals[var] = model_.sum(ke);
+  }
   std::map<std::string, std::vector<double>> vectors, scalars, none;
   for (const std::string& var : nodalVectors_) {
     std::vector<double> owned = ownedField(var, 3, u, v, f);
@@ -223,7 +260,7 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
     std::vector<double> owned = ownedField(var, 1, u, v, f);
     scalars[exodusName(var)] = model_.layout().gatherToRoot(owned.data(), 1);
   }
-  if (root) writer_->writeStep(report.time, vectors, none, scalars);
+  if (root) writer_->writeStep(report.time, vectors, none, scalars, globals);
 }
 
 }  // namespace pf

@@ -5,6 +5,12 @@
 // "Reaction Names" replaces <Set> by a short name per entry of "Reactions". "Applied Displacement" names
 // a Prescribed Displacement condition whose (space-independent) value at the step's time becomes the
 // column Applied_Displacement, right after time and step.
+//
+// One manager per output list ("Output", or Peridigm's "Output1", "Output2", ...). Like Peridigm's, it counts
+// every step reported to it over all solvers run in sequence (each solver reports its initial state too):
+// call n (1-based) is written if Initial Output Step <= n <= Final Output Step + 1 and (n - 1) is a multiple
+// of Output Frequency. The CSV's step column is n - 1. Global variables (Global_Kinetic_Energy) go to the
+// Exodus globals; a list that asks for globals only gets Peridigm's one-dummy-node file.
 #include <Teuchos_ParameterList.hpp>
 
 #include <memory>
@@ -21,7 +27,11 @@ class HistoryWriter;
 
 class OutputManager : public StepObserver {
  public:
-  OutputManager(const Teuchos::ParameterList& input, const std::string& inputFile, Problem& problem);
+  OutputManager(const Teuchos::ParameterList& input, const std::string& inputFile, Problem& problem)
+      : OutputManager(input, "Output", inputFile, problem) {}
+  // listName: the top-level output list this manager writes ("Output", "Output1", ...).
+  OutputManager(const Teuchos::ParameterList& input, const std::string& listName, const std::string& inputFile,
+                Problem& problem);
   ~OutputManager() override;
   void onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
               const std::vector<double>& f) override;
@@ -47,9 +57,11 @@ class OutputManager : public StepObserver {
   Problem& pb_;
   Model& model_;
   int frequency_ = 1;
+  long first_ = 1, last_ = 0;  // Initial / Final Output Step (last_ = 0: no limit)
+  long count_ = 0;             // steps reported so far, over all solvers
   bool exodus_ = false;
   std::string exodusName_, historyName_;
-  std::vector<std::string> nodalVectors_, elementScalars_;
+  std::vector<std::string> nodalVectors_, elementScalars_, globals_;
   std::vector<Probe> probes_;
   std::vector<Reaction> reactions_;
   std::unique_ptr<ExodusWriter> writer_;

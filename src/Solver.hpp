@@ -37,8 +37,11 @@ class Solver {
  public:
   virtual ~Solver() = default;
   virtual std::string name() const = 0;
-  // u, v hold the initial state on entry (prescribed values are applied by the solver).
-  virtual void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+  // u, v hold the initial state on entry (prescribed values are applied by the solver); on return they
+  // hold the final state, from which a following solver (Peridigm's Solver2 after Solver1) continues.
+  // times: the start time, then the end of every load step (quasi-static solvers step through them all;
+  // Verlet runs from times.front() to times.back() with its own time step). At least two, increasing.
+  virtual void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                    StepObserver& observer) = 0;
 };
 

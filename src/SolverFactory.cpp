@@ -1,9 +1,11 @@
 #include "SolverFactory.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 #include "AdrSolver.hpp"
 #include "InputError.hpp"
+#include "InputSchema.hpp"
 #include "NoxQuasiStaticSolver.hpp"
 #include "VerletSolver.hpp"
 
@@ -21,8 +23,30 @@ void requirePositive(double v, const std::string& where, const std::string& name
 
 }  // namespace
 
-std::unique_ptr<Solver> makeSolver(const Teuchos::ParameterList& s, const std::string& inputFile) {
-  const std::string where = inputFile + ": Solver";
+std::vector<double> solverTimes(const Teuchos::ParameterList& s) {
+  const double t0 = s.isParameter("Initial Time") ? getNumber(s, "Initial Time") : 0.0;
+  const Teuchos::ParameterList* steps = nullptr;
+  for (const char* n : {"QuasiStatic", "NOXQuasiStatic", "Adaptive Dynamic Relaxation"})
+    if (s.isSublist(n)) steps = &s.sublist(n);
+  // Peridigm: Final Time with Number of Load Steps wins; otherwise the explicit list of Time Steps.
+  if (steps && !(s.isParameter("Final Time") && steps->isParameter("Number of Load Steps")) &&
+      steps->isParameter("Time Steps")) {
+    std::vector<double> times;
+    std::istringstream in(steps->get<std::string>("Time Steps"));
+    for (double t; in >> t;) times.push_back(t);
+    return times;
+  }
+  const double t1 = getNumber(s, "Final Time");
+  if (!steps) return {t0, t1};
+  const int n = getInteger(*steps, "Number of Load Steps", 1);
+  std::vector<double> times = {t0};
+  for (int k = 1; k <= n; ++k) times.push_back(t0 + (t1 - t0) * k / n);  // Peridigm's t0 + k (t1 - t0) / n
+  return times;
+}
+
+std::unique_ptr<Solver> makeSolver(const Teuchos::ParameterList& s, const std::string& inputFile,
+                                   const std::string& listName) {
+  const std::string where = inputFile + ": " + listName;
   if (s.isSublist("Verlet")) {
     const Teuchos::ParameterList& l = s.sublist("Verlet");
     VerletOptions o;
@@ -38,8 +62,6 @@ std::unique_ptr<Solver> makeSolver(const Teuchos::ParameterList& s, const std::s
     const Teuchos::ParameterList& l = s.sublist(peridigmQs ? "QuasiStatic" : "NOXQuasiStatic");
     const std::string lw = where + (peridigmQs ? "/QuasiStatic" : "/NOXQuasiStatic");
     NoxOptions o;
-    o.loadSteps = get<int>(l, "Number of Load Steps", 1);
-    if (o.loadSteps < 1) throw InputError(lw + ": 'Number of Load Steps' must be at least 1");
     // Peridigm's decks give one of the two; an absolute tolerance alone means just that test.
     const bool absOnly = l.isParameter("Absolute Tolerance") && !l.isParameter("Relative Tolerance");
     o.relativeTolerance = absOnly ? 0.0 : get<double>(l, "Relative Tolerance", o.relativeTolerance);
@@ -62,8 +84,6 @@ std::unique_ptr<Solver> makeSolver(const Teuchos::ParameterList& s, const std::s
   AdrOptions o;
   const Teuchos::ParameterList& l = s.sublist("Adaptive Dynamic Relaxation");
   const std::string lw = where + "/Adaptive Dynamic Relaxation";
-  o.loadSteps = get<int>(l, "Number of Load Steps", 1);
-  if (o.loadSteps < 1) throw InputError(lw + ": 'Number of Load Steps' must be at least 1");
   o.relativeTolerance = get<double>(l, "Relative Tolerance", o.relativeTolerance);
   o.absoluteTolerance = get<double>(l, "Absolute Tolerance", 0.0);
   o.maxIterations = get<int>(l, "Maximum Iterations", o.maxIterations);

@@ -41,8 +41,9 @@ double VerletSolver::stableTimeStep(const Model& model) {
   return w2 > 0 ? 2.0 / std::sqrt(w2) : 1.0;
 }
 
-void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
-                       StepObserver& observer) {
+void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
+                       const std::vector<double>& times, StepObserver& observer) {
+  const double t0 = times.front(), t1 = times.back();
   using Clock = std::chrono::steady_clock;
   const int n = model.numDofs();
   double dt = opt_.fixedDt > 0 ? opt_.fixedDt : opt_.safetyFactor * stableTimeStep(model);

@@ -14,7 +14,7 @@ class VerletSolver : public Solver {
  public:
   explicit VerletSolver(VerletOptions o) : opt_(o) {}
   std::string name() const override { return "Verlet"; }
-  void run(Model& model, std::vector<double>& u, std::vector<double>& v, double t0, double t1,
+  void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
   static double stableTimeStep(const Model& model);  // Gershgorin estimate, before the safety factor
 

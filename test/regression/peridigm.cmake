@@ -30,3 +30,27 @@ foreach(np 1 2)
   periforge_check(peridigm_compat_line_np${np}_check peridigm_compat_line_np${np}
     ${PY} ${REG}/compat/check_compat_line.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_line_np${np}/compat_line.e)
 endforeach()
+
+# Peridigm's Stored_Elastic_Energy against an independent bond sum and the closed form 9/2 kappa eps^2 V of an
+# isotropic stretch, on load times given as QuasiStatic "Time Steps"; numbered Solver1/Solver2 and
+# Output1/Output2 lists (Initial/Final Output Step, Global_Kinetic_Energy) against one equivalent solver.
+foreach(np 1 2)
+  periforge_run(peridigm_compat_energy_np${np} ${REG}/compat/compat_energy.xml ${np})
+  periforge_check(peridigm_compat_energy_np${np}_check peridigm_compat_energy_np${np}
+    ${PY} ${REG}/compat/check_compat_energy.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_energy_np${np}/compat_energy.e)
+  periforge_run(peridigm_compat_one_solver_np${np} ${REG}/compat/compat_one_solver.xml ${np})
+  periforge_run(peridigm_compat_two_solvers_np${np} ${REG}/compat/compat_two_solvers.xml ${np})
+  set(two ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_two_solvers_np${np})
+  periforge_check(peridigm_compat_two_solvers_np${np}_check
+    "peridigm_compat_two_solvers_np${np};peridigm_compat_one_solver_np${np}"
+    ${PY} ${REG}/compat/check_compat_two_solvers.py ${two}/compat_two_solvers_1.e ${two}/compat_two_solvers_2.e
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_one_solver_np${np}/compat_one_solver.e)
+endforeach()
+
+# Peridigm's block name "default" (the blocks no other group names) and the Horizon output, by hand counts.
+foreach(np 1 2)
+  periforge_run(peridigm_compat_default_block_np${np} ${REG}/compat/compat_default_block.xml ${np})
+  periforge_check(peridigm_compat_default_block_np${np}_check peridigm_compat_default_block_np${np}
+    ${PY} ${REG}/compat/check_compat_default_block.py
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_default_block_np${np}/compat_default_block.e)
+endforeach()
