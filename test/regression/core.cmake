@@ -21,6 +21,10 @@ foreach(np 1 2)
   periforge_run(patch_3d_np${np} ${REG}/patch/patch_3d.xml ${np})
   periforge_check(patch_3d_np${np}_check patch_3d_np${np}
     ${PY} ${REG}/patch/check_patch.py ${CMAKE_CURRENT_BINARY_DIR}/regression/patch_3d_np${np}/patch_3d.e)
+  # The same with partial volumes (Discretization "Partial Volume").
+  periforge_run(patch_3d_pv_np${np} ${REG}/patch/patch_3d_pv.xml ${np})
+  periforge_check(patch_3d_pv_np${np}_check patch_3d_pv_np${np}
+    ${PY} ${REG}/patch/check_patch.py ${CMAKE_CURRENT_BINARY_DIR}/regression/patch_3d_pv_np${np}/patch_3d_pv.e)
 endforeach()
 
 # Bars in uniaxial tension (3D, plane stress, plane strain), np = 1 and 2, and np agreement.
