@@ -42,6 +42,7 @@ MaterialPoint::MaterialPoint(const Material& mat, double dx, double ratio, doubl
   const std::array<double, 3> cell = {dx, dx, planar ? 0.0 : dx};
   buildFamilies(x_, 1, {horizon}, family_, partialVolume ? &cell : nullptr);
   family_.influence.assign(family_.numBonds(), 1.0);  // omega = 1, as in the paper
+  family_.unitInfluence = true;
   m_.assign(numPoints, 0.0);
   view_ = makeView(family_, 0, 1, x_.data(), volume_.data(), m_.data(), horizon);
   computeWeightedVolume(view_, m_.data());

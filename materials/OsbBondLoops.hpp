@@ -154,28 +154,28 @@ PF_INLINE int gatherFamily(const FamilyView& fam, const double* __restrict y, in
   return n;
 }
 
-// One term of the dilatation sum (Eqs. 4/16): omega x (e - e^dp) V_j, e = len - x; T = double or Lanes.
-template <class T>
-PF_INLINE T dilatationTerm(const T& w, const T& x, const T& len, const T& ep, const T& vj) {
-  return w * x * ((len - x) - ep) * vj;
-}
-template <class T>
-PF_INLINE T dilatationTerm(const T& w, const T& x, const T& len, const T& vj) {
-  return w * x * (len - x) * vj;
+// omega_k v for the chunk at bond k; Unit (FamilyView::unitInfluence): omega = 1, v itself, without
+// reading the array (1 * v == v exactly, so both give the same bits).
+template <bool Unit, class Chunk>
+PF_INLINE Lanes weighted(const Chunk& c, const double* __restrict w, int k, const Lanes& v) {
+  if constexpr (Unit) return v;
+  else return c.load(w + k) * v;
 }
 
 // sum_k omega_k x_k (len_k - x_k - ep_k) V_k over the family (ep null: no plastic extension); inBlock
-// from chunksStayInBlock.
+// from chunksStayInBlock. Each term is omega x (e - e^dp) V_j (Eqs. 4/16), e = len - x.
+template <bool Unit>
 PF_INLINE double dilatationSum(const double* __restrict w, const double* __restrict x, const double* __restrict len,
                                const double* __restrict ep, const double* __restrict vj, int n, bool inBlock) {
   Lanes acc = {};
   if (ep)
     forEachChunk(n, inBlock, [&](int k, auto c) {
-      acc += dilatationTerm(c.load(w + k), c.load(x + k), c.load(len + k), c.load(ep + k), c.load(vj + k));
+      acc += weighted<Unit>(c, w, k, c.load(x + k)) * ((c.load(len + k) - c.load(x + k)) - c.load(ep + k)) *
+             c.load(vj + k);
     });
   else
     forEachChunk(n, inBlock, [&](int k, auto c) {
-      acc += dilatationTerm(c.load(w + k), c.load(x + k), c.load(len + k), c.load(vj + k));
+      acc += weighted<Unit>(c, w, k, c.load(x + k)) * (c.load(len + k) - c.load(x + k)) * c.load(vj + k);
     });
   return laneSum(acc);
 }

@@ -33,16 +33,18 @@ FamilyScratch& familyScratch(const FamilyView& fam) {
 
 namespace {
 
-// theta_i = k (D/m_i) sum_j omega x (e - e^dp) V_j (Eqs. 4/16), from a gathered family.
+// theta_i = k (D/m_i) sum_j omega x (e - e^dp) V_j (Eqs. 4/16), from a gathered family; Unit: omega = 1.
+template <bool Unit>
 PF_INLINE double nodeDilatation(const FamilyView& fam, const OsbConstants& c, int i, const osb::FamilyScratch& sc,
                                 const double* ep, int n) {
   const int b0 = fam.offsets[i];
   const double sum =
-      osb::dilatationSum(fam.influence + b0, fam.refLength + b0, sc.len, ep, sc.vj, n, osb::chunksStayInBlock(fam, i));
+      osb::dilatationSum<Unit>(fam.influence + b0, fam.refLength + b0, sc.len, ep, sc.vj, n, osb::chunksStayInBlock(fam, i));
   return c.k * c.D * sum / fam.weightedVolume[i];
 }
 
 // Adds node i's elastic bond forces (Eqs. 7-13) from its gathered family and its dilatation.
+template <bool Unit>
 PF_INLINE void addNodeElasticForce(const FamilyView& fam, const OsbConstants& c, int i, const osb::FamilyScratch& sc,
                                    double theta, int n, double* force) {
   const int b0 = fam.offsets[i];
@@ -55,9 +57,19 @@ PF_INLINE void addNodeElasticForce(const FamilyView& fam, const OsbConstants& c,
   // t = omega (iso x + dev e) along the deformed bond: s = t / |y_j - y_i|
   auto forceOverLength = [&](int k, auto ch) {
     const osb::Lanes x = ch.load(xr + k), l = ch.load(len + k, 1.0);
-    return ch.load(w + k) * (iso * x + dev * (l - x)) / l;
+    return osb::weighted<Unit>(ch, w, k, iso * x + dev * (l - x)) / l;
   };
   osb::addBondForces(fam, i, sc, osb::chunksStayInBlock(fam, i), forceOverLength, force);
+}
+
+template <bool Unit>
+PF_INLINE void elasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const double* y,
+                                         osb::FamilyScratch& sc, double* theta, double* force) {
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const int n = osb::gatherFamily(fam, y, i, sc);
+    theta[i] = nodeDilatation<Unit>(fam, c, i, sc, nullptr, n);
+    addNodeElasticForce<Unit>(fam, c, i, sc, theta[i], n, force);
+  }
 }
 
 }  // namespace
@@ -67,7 +79,8 @@ PF_KERNEL_CLONES void osbDilatation(const FamilyView& fam, const OsbConstants& c
   osb::FamilyScratch& sc = osb::familyScratch(fam);
   for (int i = fam.begin; i < fam.end; ++i) {
     const int n = osb::gatherFamily(fam, y, i, sc);
-    theta[i] = nodeDilatation(fam, c, i, sc, edp ? edp + fam.offsets[i] : nullptr, n);
+    const double* ep = edp ? edp + fam.offsets[i] : nullptr;
+    theta[i] = fam.unitInfluence ? nodeDilatation<true>(fam, c, i, sc, ep, n) : nodeDilatation<false>(fam, c, i, sc, ep, n);
   }
 }
 
@@ -76,18 +89,17 @@ PF_KERNEL_CLONES void osbElasticForce(const FamilyView& fam, const OsbConstants&
   osb::FamilyScratch& sc = osb::familyScratch(fam);
   for (int i = fam.begin; i < fam.end; ++i) {
     const int n = osb::gatherFamily(fam, y, i, sc);
-    addNodeElasticForce(fam, c, i, sc, theta[i], n, force);
+    if (fam.unitInfluence) addNodeElasticForce<true>(fam, c, i, sc, theta[i], n, force);
+    else addNodeElasticForce<false>(fam, c, i, sc, theta[i], n, force);
   }
 }
 
 PF_KERNEL_CLONES void osbElasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const double* y,
                                                    double* theta, double* force) {
   osb::FamilyScratch& sc = osb::familyScratch(fam);
-  for (int i = fam.begin; i < fam.end; ++i) {
-    const int n = osb::gatherFamily(fam, y, i, sc);
-    theta[i] = nodeDilatation(fam, c, i, sc, nullptr, n);
-    addNodeElasticForce(fam, c, i, sc, theta[i], n, force);
-  }
+  // One loop per influence kind, so that the omega = 1 one reads no influence array.
+  if (fam.unitInfluence) elasticDilatationAndForce<true>(fam, c, y, sc, theta, force);
+  else elasticDilatationAndForce<false>(fam, c, y, sc, theta, force);
 }
 
 void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, const double* y, const double* dy,

@@ -35,6 +35,7 @@ struct TrialMoments {
 
 // Writes the trial deviatoric force state t^d_tr = omega bm (e - c theta_tr x - e^dp_n) (Eqs. 40-41) to
 // tdv and returns its moments, bond k in partial sum k mod kLanes.
+template <bool Unit>
 PF_INLINE TrialMoments trialDeviatoricState(const double* __restrict w, const double* __restrict xr,
                                             const double* __restrict len, const double* __restrict epN,
                                             const double* __restrict vj, double bm, double cth, int n,
@@ -42,7 +43,8 @@ PF_INLINE TrialMoments trialDeviatoricState(const double* __restrict w, const do
   osb::Lanes S2 = {}, Sx = {}, S3 = {}, A3 = {}, Xx = {};
   osb::forEachChunk(n, inBlock, [&](int k, auto c) {
     const osb::Lanes x = c.load(xr + k), v = c.load(vj + k);
-    const osb::Lanes td = c.load(w + k) * bm * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
+    const osb::Lanes bmv = osb::Lanes{} + bm;
+    const osb::Lanes td = osb::weighted<Unit>(c, w, k, bmv) * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
     const osb::Lanes tv = td * v;
     c.store(tdv + k, td);
     S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += (td < 0 ? -td : td) * td * tv; Xx += x * x * v;
@@ -53,6 +55,7 @@ PF_INLINE TrialMoments trialDeviatoricState(const double* __restrict w, const do
 // e^dp_n+1 = e^dp_n + a1 (t^d - pp x) + a2 x (Eqs. 52, 58: the returned t_perp and pp x scaled by
 // dlambda and phi), written to ep; returns the dilatation sum over the new e^dp (Eq. 16), in the order
 // of osb::dilatationSum.
+template <bool Unit>
 PF_INLINE double updatePlasticExtension(const double* __restrict w, const double* __restrict xr,
                                         const double* __restrict len, const double* __restrict epN,
                                         const double* __restrict vj, const double* __restrict tdv, double a1,
@@ -63,15 +66,15 @@ PF_INLINE double updatePlasticExtension(const double* __restrict w, const double
     const osb::Lanes x = c.load(xr + k);
     const osb::Lanes e = c.load(epN + k) + a1 * (c.load(tdv + k) - pp * x) + a2 * x;
     c.store(ep + k, e);
-    acc += osb::dilatationTerm(c.load(w + k), x, c.load(len + k), e, c.load(vj + k));
+    acc += osb::weighted<Unit>(c, w, k, x) * ((c.load(len + k) - x) - e) * c.load(vj + k);
   });
   return osb::laneSum(acc);
 }
 
-}  // namespace
-
-PF_KERNEL_CLONES void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y,
-                                 const J2Fields& s, double* force) {
+// The kernel for one influence kind; Unit: omega = 1 everywhere, the array is not read.
+template <bool Unit>
+PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
+                       double* force) {
   const OsbConstants& c = p.osb;
   // beta: does the dilatation see the plastic extension (Eq. 16)? 3D: either way (sum x e^dp = 0 for
   // omega = 1). Plane stress: yes. Plane strain: no -- only then is the in-plane mean stress classical
@@ -112,12 +115,12 @@ PF_KERNEL_CLONES void osbJ2Force(const FamilyView& fam, const J2Parameters& p, c
 
     // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
     // osbDilatation so that the elastic response is bit-identical to "Elastic".
-    double sum = osb::dilatationSum(w, xr, len, beta ? epN : nullptr, vj, n, inBlock);
+    double sum = osb::dilatationSum<Unit>(w, xr, len, beta ? epN : nullptr, vj, n, inBlock);
     const double thetaTr = c.k * c.D * sum / m;
 
     // Trial deviatoric force state (Eqs. 40-41) and its moments.
     const double cth = c.c * thetaTr;
-    const TrialMoments mo = trialDeviatoricState(w, xr, len, epN, vj, bm, cth, n, inBlock, tdv);
+    const TrialMoments mo = trialDeviatoricState<Unit>(w, xr, len, epN, vj, bm, cth, n, inBlock, tdv);
     const double S2 = mo.S2, Sx = mo.Sx, S3 = mo.S3, A3 = mo.A3, Xx = mo.Xx;
     // Split t^d = t_perp + pp x with t_perp . x = 0: the two parts decay at different rates in plane
     // stress, and only pp enters the 2D (t.x)^2 term.
@@ -181,7 +184,7 @@ PF_KERNEL_CLONES void osbJ2Force(const FamilyView& fam, const J2Parameters& p, c
     double theta = thetaTr;
     if (dlam > 0.0) {
       const double a1 = dlam * G1, a2 = dlam * phi * G2 * pp;
-      sum = updatePlasticExtension(w, xr, len, epN, vj, tdv, a1, a2, pp, n, inBlock, ep);
+      sum = updatePlasticExtension<Unit>(w, xr, len, epN, vj, tdv, a1, a2, pp, n, inBlock, ep);
       // Plane strain: theta from the total extension, i.e. the trial one (see beta above).
       if (beta) theta = c.k * c.D * sum / m;
     } else {
@@ -203,10 +206,18 @@ PF_KERNEL_CLONES void osbJ2Force(const FamilyView& fam, const J2Parameters& p, c
     const double dev = c.B * invm;
     auto forceOverLength = [&](int k, auto ch) {  // s = t / |y_j - y_i|; e^dp = 0 gives the elastic s
       const osb::Lanes x = ch.load(xr + k), l = ch.load(len + k, 1.0);
-      return ch.load(w + k) * (iso * x + dev * ((l - x) - ch.load(ep + k))) / l;
+      return osb::weighted<Unit>(ch, w, k, iso * x + dev * ((l - x) - ch.load(ep + k))) / l;
     };
     osb::addBondForces(fam, i, scr, inBlock, forceOverLength, force);
   }
+}
+
+}  // namespace
+
+PF_KERNEL_CLONES void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y,
+                                 const J2Fields& s, double* force) {
+  if (fam.unitInfluence) j2Force<true>(fam, p, y, s, force);
+  else j2Force<false>(fam, p, y, s, force);
 }
 
 }  // namespace pf

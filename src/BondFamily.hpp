@@ -13,6 +13,7 @@ struct BondFamily {
   std::vector<double> refLength;   // |xi| of each bond
   std::vector<double> influence;   // omega(|xi|) of each bond
   std::vector<double> fraction;    // partial volume: share of V_j inside the horizon (empty = all 1)
+  bool unitInfluence = false;      // every omega is exactly 1 (the kernels then skip the array)
 
   int numOwned() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
   std::size_t numBonds() const { return neighbors.size(); }
@@ -32,6 +33,7 @@ struct FamilyView {
   // Per bond: the share of V_j that lies inside the horizon (partial-volume quadrature), or null when
   // every neighbour counts whole. Every family sum weights V_j by it, and the reaction f_j -= T V_i too.
   const double* fraction = nullptr;
+  bool unitInfluence = false;       // influence[b] == 1 for every bond: kernels may skip reading it
   double horizon = 0.0;
 };
 
@@ -45,6 +47,7 @@ inline FamilyView makeView(const BondFamily& f, int begin, int end, const double
   v.refLength = f.refLength.data();
   v.influence = f.influence.data();
   v.fraction = f.fraction.empty() ? nullptr : f.fraction.data();
+  v.unitInfluence = f.unitInfluence;
   v.x = x;
   v.volume = volume;
   v.weightedVolume = m;

@@ -101,6 +101,8 @@ DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vect
     for (int b = family_.offsets[i]; b < family_.offsets[i + 1]; ++b)
       family_.influence[b] =
           influenceValue(influence, cell ? std::min(family_.refLength[b], h[i]) : family_.refLength[b], h[i]);
+  family_.unitInfluence =
+      std::all_of(family_.influence.begin(), family_.influence.end(), [](double w) { return w == 1.0; });
 
   // Keep only candidates that some bond reaches; candidate order is preserved so rows stay sorted.
   std::vector<int> ghostIndex(candidates.size(), -1);
