@@ -7,20 +7,17 @@ import sys
 import netCDF4
 import numpy as np
 
-
-def names(d, key):
-    return [b"".join(x for x in row if x).decode() for row in d[key][:].data]
+from exodus_fields import element
 
 
 d = netCDF4.Dataset(sys.argv[1])
-ele = names(d, "name_elem_var")
 ids = list(np.asarray(d["eb_prop1"][:]))
 ok = True
 if ids != [1, 3]:
     print("element blocks", ids, "expected [1, 3]"); ok = False
 got = {}
 for k, b in enumerate(ids):
-    ev = lambda n: np.asarray(d["vals_elem_var%deb%d" % (ele.index(n) + 1, k + 1)][:])[0]
+    ev = lambda n: element(d, n, k + 1)[0]
     for i, h, nn in zip(ev("ID"), ev("Horizon"), ev("Number_Of_Neighbors")):
         got[int(i)] = (h, nn)
 want = {1: (1.5, 1), 2: (1.5, 2), 3: (1.5, 2), 4: (2.5, 4), 5: (2.5, 3), 6: (2.5, 2)}

@@ -12,17 +12,14 @@ import sys
 import netCDF4
 import numpy as np
 
+from exodus_fields import element, nodal
+
 KAPPA, MU, EPS, HORIZON = 2.0e9, 1.0e9, 1.0e-3, 1.75
 
 
-def names(d, key):
-    return [b"".join(x for x in row if x).decode() for row in d[key][:].data]
-
-
 d = netCDF4.Dataset(sys.argv[1])
-nod, ele = names(d, "name_nod_var"), names(d, "name_elem_var")
-nv = lambda n: np.asarray(d["vals_nod_var%d" % (nod.index(n) + 1)][:])
-ev = lambda n: np.asarray(d["vals_elem_var%deb1" % (ele.index(n) + 1)][:])
+nv = lambda n: nodal(d, n)
+ev = lambda n: element(d, n)
 ok = True
 t = np.asarray(d["time_whole"][:])
 if not np.allclose(t, [0.0, 0.5, 0.75, 1.0], rtol=0, atol=1e-15):

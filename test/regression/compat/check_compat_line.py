@@ -7,15 +7,12 @@ import sys
 import netCDF4
 import numpy as np
 
-
-def names(d, key):
-    return [b"".join(x for x in row if x).decode() for row in d[key][:].data]
+from exodus_fields import element, nodal
 
 
 d = netCDF4.Dataset(sys.argv[1])
-nod, ele = names(d, "name_nod_var"), names(d, "name_elem_var")
-nv = lambda n: np.asarray(d["vals_nod_var%d" % (nod.index(n) + 1)][:])
-ev = lambda n: np.asarray(d["vals_elem_var%deb1" % (ele.index(n) + 1)][:])
+nv = lambda n: nodal(d, n)
+ev = lambda n: element(d, n)
 ok = True
 m = ev("Weighted_Volume")[-1]
 if not np.allclose(m, [3.0, 2.0, 3.0], rtol=1e-12):
