@@ -18,6 +18,14 @@ void addBreak(std::vector<double>& b, double x, double lo, double hi) {
   if (x > lo && x < hi) b.push_back(x);
 }
 
+// The x in (lo, hi) where the ball's section through x, radius sqrt(R^2 - x^2), has radius r.
+void addSectionRadiusBreaks(std::vector<double>& b, double r, double R, double lo, double hi) {
+  if (!(r < R)) return;
+  const double x = std::sqrt(R * R - r * r);
+  addBreak(b, x, lo, hi);
+  addBreak(b, -x, lo, hi);
+}
+
 // Area of [a0, b0] x [a1, b1] inside the disk of radius R about the origin, exactly: between the
 // breakpoints (where the chord half-length s(x) = sqrt(R^2 - x^2) crosses a1, b1 or 0) the overlap
 // min(b1, s) - max(a1, -s) is one of b1 - a1, s - a1, b1 + s, 2s or 0, each integrated in closed form.
@@ -26,12 +34,7 @@ double rectangleInDisk(double a0, double b0, double a1, double b1, double R) {
   std::vector<double> br = {a0, b0};
   addBreak(br, -R, a0, b0);
   addBreak(br, R, a0, b0);
-  for (double c : {a1, b1})
-    if (std::fabs(c) < R) {
-      const double x = std::sqrt(R * R - c * c);
-      addBreak(br, x, a0, b0);
-      addBreak(br, -x, a0, b0);
-    }
+  for (double c : {a1, b1}) addSectionRadiusBreaks(br, std::fabs(c), R, a0, b0);
   std::sort(br.begin(), br.end());
   double area = 0.0;
   for (std::size_t k = 0; k + 1 < br.size(); ++k) {
@@ -62,12 +65,7 @@ double boxInBall(const double a[3], const double b[3], double R) {
   std::vector<double> radii = {std::fabs(a[1]), std::fabs(b[1]), std::fabs(a[2]), std::fabs(b[2])};
   for (double c1 : {a[1], b[1]})
     for (double c2 : {a[2], b[2]}) radii.push_back(std::hypot(c1, c2));
-  for (double r : radii)
-    if (r < R) {
-      const double x = std::sqrt(R * R - r * r);
-      addBreak(br, x, lo, hi);
-      addBreak(br, -x, lo, hi);
-    }
+  for (double r : radii) addSectionRadiusBreaks(br, r, R, lo, hi);
   std::sort(br.begin(), br.end());
   double vol = 0.0;
   for (std::size_t k = 0; k + 1 < br.size(); ++k) {
