@@ -36,6 +36,14 @@ void ExodusWriter::check(int status, const char* what) const {
                              std::to_string(status) + ")");
 }
 
+void ExodusWriter::putVariableNames(int entityType, std::vector<std::string> names, const std::string& what) const {
+  const auto type = static_cast<ex_entity_type>(entityType);
+  check(ex_put_variable_param(exoid_, type, static_cast<int>(names.size())), ("ex_put_variable_param(" + what + ")").c_str());
+  auto ptrs = cstrings(names);
+  check(ex_put_variable_names(exoid_, type, static_cast<int>(ptrs.size()), ptrs.data()),
+        ("ex_put_variable_names(" + what + ")").c_str());
+}
+
 ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double>& coords,
                            const std::vector<int>& blockIdPerNode, bool planar,
                            const std::vector<std::string>& nodalVectorNames,
@@ -134,33 +142,15 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
     check(ex_put_id_map(exoid_, EX_NODE_MAP, nodeMap.data()), "ex_put_id_map(nodes)");
     check(ex_put_id_map(exoid_, EX_ELEM_MAP, elemMap.data()), "ex_put_id_map(elements)");
 
-    if (!nodalNames.empty()) {
-      check(ex_put_variable_param(exoid_, EX_NODAL, static_cast<int>(nodalNames.size())),
-            "ex_put_variable_param(nodal)");
-      auto ptrs = cstrings(nodalNames);
-      check(ex_put_variable_names(exoid_, EX_NODAL, static_cast<int>(ptrs.size()), ptrs.data()),
-            "ex_put_variable_names(nodal)");
-    }
+    if (!nodalNames.empty()) putVariableNames(EX_NODAL, nodalNames, "nodal");
     if (!elementNames_.empty()) {
-      check(ex_put_variable_param(exoid_, EX_ELEM_BLOCK, static_cast<int>(elementNames_.size())),
-            "ex_put_variable_param(element)");
-      auto names = elementNames_;
-      auto ptrs = cstrings(names);
-      check(ex_put_variable_names(exoid_, EX_ELEM_BLOCK, static_cast<int>(ptrs.size()), ptrs.data()),
-            "ex_put_variable_names(element)");
+      putVariableNames(EX_ELEM_BLOCK, elementNames_, "element");
       std::vector<int> truth(blockIds_.size() * elementNames_.size(), 1);
       check(ex_put_truth_table(exoid_, EX_ELEM_BLOCK, static_cast<int>(blockIds_.size()),
                                static_cast<int>(elementNames_.size()), truth.data()),
             "ex_put_truth_table");
     }
-    if (!globalNames_.empty()) {
-      check(ex_put_variable_param(exoid_, EX_GLOBAL, static_cast<int>(globalNames_.size())),
-            "ex_put_variable_param(global)");
-      auto names = globalNames_;
-      auto ptrs = cstrings(names);
-      check(ex_put_variable_names(exoid_, EX_GLOBAL, static_cast<int>(ptrs.size()), ptrs.data()),
-            "ex_put_variable_names(global)");
-    }
+    if (!globalNames_.empty()) putVariableNames(EX_GLOBAL, globalNames_, "global");
     check(ex_update(exoid_), "ex_update");
   } catch (...) {
     ex_close(exoid_);

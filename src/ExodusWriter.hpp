@@ -44,6 +44,8 @@ class ExodusWriter {
 
  private:
   void check(int status, const char* what) const;
+  // Declares the variables of one kind (entityType: an ex_entity_type, e.g. EX_NODAL) and their names.
+  void putVariableNames(int entityType, std::vector<std::string> names, const std::string& what) const;
 
   std::string filename_;
   int exoid_ = -1;
