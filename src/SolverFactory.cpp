@@ -28,9 +28,8 @@ std::vector<double> solverTimes(const Teuchos::ParameterList& s) {
   const Teuchos::ParameterList* steps = nullptr;
   for (const char* n : {"QuasiStatic", "NOXQuasiStatic", "Adaptive Dynamic Relaxation"})
     if (s.isSublist(n)) steps = &s.sublist(n);
-  // Peridigm: Final Time with Number of Load Steps wins; otherwise the explicit list of Time Steps.
-  if (steps && !(s.isParameter("Final Time") && steps->isParameter("Number of Load Steps")) &&
-      steps->isParameter("Time Steps")) {
+  // Peridigm's explicit list of load times (validateInput allows it without Number of Load Steps only).
+  if (steps && steps->isParameter("Time Steps")) {
     std::vector<double> times;
     std::istringstream in(steps->get<std::string>("Time Steps"));
     for (double t; in >> t;) times.push_back(t);
