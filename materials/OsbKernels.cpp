@@ -66,6 +66,7 @@ template <bool Unit>
 PF_INLINE void elasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const double* y,
                                          osb::FamilyScratch& sc, double* theta, double* force) {
   for (int i = fam.begin; i < fam.end; ++i) {
+    osb::prefetchFamily(fam, i);
     const int n = osb::gatherFamily(fam, y, i, sc);
     theta[i] = nodeDilatation<Unit>(fam, c, i, sc, nullptr, n);
     addNodeElasticForce<Unit>(fam, c, i, sc, theta[i], n, force);

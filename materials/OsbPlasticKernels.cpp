@@ -100,6 +100,11 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
     const double* __restrict epN = s.edpN + b0;
     double* __restrict ep = s.edp + b0;
     const bool inBlock = osb::chunksStayInBlock(fam, i);
+    const int ahead = osb::prefetchFamily(fam, i);
+    if (ahead >= 0) {
+      osb::prefetchBondRange(fam, ahead, s.edpN, false);
+      osb::prefetchBondRange(fam, ahead, s.edp, true);
+    }
     const double m = fam.weightedVolume[i];
     const double invm = 1.0 / m;
     double my = m;
