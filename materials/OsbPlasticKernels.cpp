@@ -46,7 +46,7 @@ PF_INLINE TrialMoments trialDeviatoricState(const double* __restrict w, const do
     const osb::Lanes bmv = osb::Lanes{} + bm;
     const osb::Lanes td = osb::weighted<Unit>(c, w, k, bmv) * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
     const osb::Lanes tv = td * v;
-    c.store(tdv + k, td);
+    osb::FullChunk{}.store(tdv + k, td);  // scratch: padded to whole chunks
     S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += (td < 0 ? -td : td) * td * tv; Xx += x * x * v;
   });
   return {osb::laneSum(S2), osb::laneSum(Sx), osb::laneSum(S3), osb::laneSum(A3), osb::laneSum(Xx)};
