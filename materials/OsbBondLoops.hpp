@@ -114,6 +114,23 @@ struct FamilyScratch {
   double *g0 = nullptr, *g1 = nullptr, *g2 = nullptr;  // force on the far end, before the scatter
 };
 
+// A node's (y, V), or its force (f, 0), as one 32-byte record: the gather then reads a neighbour with
+// one vector load and the scatter updates it with one vector read-modify-write, where three scalar
+// ones each had cost 33 instructions per bond (BENCHMARKS.md, session 4).
+typedef double Quad __attribute__((vector_size(4 * sizeof(double))));
+
+struct NodeRecords {
+  const Quad* pos = nullptr;  // (y_j, V_j) of every overlap node of the view
+  Quad* force = nullptr;      // (f_j, 0), copied from force and back (so the sums round as on force itself)
+};
+
+// Thread-local records for the fam.numNodes overlap nodes: positions packed from y and fam.volume, and,
+// if force is not null, the force records loaded from it. Grown, never shrunk.
+NodeRecords nodeRecords(const FamilyView& fam, const double* y, const double* force);
+
+// Writes the force records back to force (3 per node).
+void storeForces(const FamilyView& fam, const NodeRecords& rec, double* force);
+
 // Thread-local scratch for families of up to the largest family of [fam.begin, fam.end); grown, never
 // shrunk (one allocation per thread and size, not per call).
 FamilyScratch& familyScratch(const FamilyView& fam);
@@ -148,24 +165,24 @@ PF_INLINE int prefetchFamily(const FamilyView& fam, int i) {
 }
 
 // Gathers node i's family into the scratch; returns its size.
-PF_INLINE int gatherFamily(const FamilyView& fam, const double* __restrict y, int i, FamilyScratch& sc) {
+PF_INLINE int gatherFamily(const FamilyView& fam, const Quad* __restrict pos, int i, FamilyScratch& sc) {
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
   const int* __restrict nb = fam.neighbors + b0;
-  const double* __restrict V = fam.volume;
   double* __restrict d0 = sc.d0;
   double* __restrict d1 = sc.d1;
   double* __restrict d2 = sc.d2;
   double* __restrict len = sc.len;
   double* __restrict vj = sc.vj;
-  const double yi0 = y[3 * i], yi1 = y[3 * i + 1], yi2 = y[3 * i + 2];
-  // The indexed loads stay scalar and only the sqrt loop is vectorized: on the AMD EPYC of BENCHMARKS.md
-  // (session 4) this ran the hardening kernel 11 % faster than one vector loop with gathers (AVX-512
-  // gathers are slow there). std::sqrt vectorizes because the kernel sources are compiled with
-  // -fno-math-errno, and sqrtpd rounds exactly as sqrtsd.
+  Quad yi = pos[i];
+  yi[3] = 0.0;  // so that the fourth lane passes V_j through unchanged
+  // One vector load and subtraction per neighbour; only the sqrt loop is vectorized across bonds: on
+  // the AMD EPYC of BENCHMARKS.md (session 4) the AVX-512 gathers ran the kernel 11 % slower than
+  // scalar loads. std::sqrt vectorizes because the kernel sources are compiled with -fno-math-errno,
+  // and sqrtpd rounds exactly as sqrtsd.
   for (int k = 0; k < n; ++k) {
-    const int j = nb[k];
-    d0[k] = y[3 * j] - yi0; d1[k] = y[3 * j + 1] - yi1; d2[k] = y[3 * j + 2] - yi2;
-    vj[k] = V[j];
+    const Quad r = pos[nb[k]] - yi;
+    d0[k] = r[0]; d1[k] = r[1]; d2[k] = r[2];
+    vj[k] = r[3];
   }
 #pragma omp simd
   for (int k = 0; k < n; ++k) len[k] = std::sqrt(d0[k] * d0[k] + d1[k] * d1[k] + d2[k] * d2[k]);
@@ -211,11 +228,11 @@ PF_INLINE double dilatationSum(const double* __restrict w, const double* __restr
 
 // f_i += t V_j along each bond, f_j -= t V_i, with forceOverLength(k, chunk) giving s = t / len (the
 // scalar force state over the deformed length) for the chunk at bond k; inBlock as for forEachChunk.
-// The arithmetic runs on vectors into the scratch; only the scatter to the neighbours (a read-modify-
-// write of three doubles per bond) stays scalar.
+// The arithmetic runs on vectors into the scratch; the scatter to the neighbours is one record
+// read-modify-write per bond (force: the records of nodeRecords).
 template <class ForceOverLength>
 PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& sc, bool inBlock,
-                             ForceOverLength&& forceOverLength, double* __restrict force) {
+                             ForceOverLength&& forceOverLength, Quad* __restrict force) {
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
   const int* __restrict nb = fam.neighbors + b0;
   const double Vi = fam.volume[i];
@@ -232,17 +249,11 @@ PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& 
   const double* __restrict g2 = sc.g2;
   if (fam.fraction) {  // the reaction on j carries the same share of the bond as f_i (V_j fr)
     const double* __restrict fr = fam.fraction + b0;
-    for (int k = 0; k < n; ++k) {
-      double* fj = force + 3 * nb[k];
-      fj[0] -= g0[k] * fr[k]; fj[1] -= g1[k] * fr[k]; fj[2] -= g2[k] * fr[k];
-    }
+    for (int k = 0; k < n; ++k) force[nb[k]] -= Quad{g0[k] * fr[k], g1[k] * fr[k], g2[k] * fr[k], 0.0};
   } else {
-    for (int k = 0; k < n; ++k) {
-      double* fj = force + 3 * nb[k];
-      fj[0] -= g0[k]; fj[1] -= g1[k]; fj[2] -= g2[k];
-    }
+    for (int k = 0; k < n; ++k) force[nb[k]] -= Quad{g0[k], g1[k], g2[k], 0.0};
   }
-  force[3 * i] += laneSum(a0); force[3 * i + 1] += laneSum(a1); force[3 * i + 2] += laneSum(a2);
+  force[i] += Quad{laneSum(a0), laneSum(a1), laneSum(a2), 0.0};
 }
 
 }  // namespace osb

@@ -29,6 +29,38 @@ FamilyScratch& familyScratch(const FamilyView& fam) {
   return s;
 }
 
+namespace {
+// n records in a thread-local buffer aligned to a 64-byte line (std::vector<Quad> does not guarantee the
+// 32-byte alignment of Quad: large blocks come from mmap at a 16-byte offset).
+Quad* recordBuffer(std::vector<double>& buf, std::size_t n) {
+  if (buf.size() < 4 * n + 8) buf.assign(4 * n + 8, 0.0);
+  double* p = buf.data();
+  while (reinterpret_cast<std::uintptr_t>(p) % 64 != 0) ++p;
+  return reinterpret_cast<Quad*>(p);
+}
+}  // namespace
+
+NodeRecords nodeRecords(const FamilyView& fam, const double* y, const double* force) {
+  thread_local std::vector<double> posBuf, forceBuf;
+  const std::size_t n = static_cast<std::size_t>(fam.numNodes);
+  Quad* pos = recordBuffer(posBuf, n);
+  const double* V = fam.volume;
+  for (std::size_t j = 0; j < n; ++j) pos[j] = Quad{y[3 * j], y[3 * j + 1], y[3 * j + 2], V[j]};
+  NodeRecords r;
+  r.pos = pos;
+  if (force) {
+    Quad* frc = recordBuffer(forceBuf, n);
+    for (std::size_t j = 0; j < n; ++j) frc[j] = Quad{force[3 * j], force[3 * j + 1], force[3 * j + 2], 0.0};
+    r.force = frc;
+  }
+  return r;
+}
+
+void storeForces(const FamilyView& fam, const NodeRecords& rec, double* force) {
+  for (int j = 0; j < fam.numNodes; ++j)
+    for (int c = 0; c < 3; ++c) force[3 * j + c] = rec.force[j][c];
+}
+
 }  // namespace osb
 
 namespace {
@@ -46,7 +78,7 @@ PF_INLINE double nodeDilatation(const FamilyView& fam, const OsbConstants& c, in
 // Adds node i's elastic bond forces (Eqs. 7-13) from its gathered family and its dilatation.
 template <bool Unit>
 PF_INLINE void addNodeElasticForce(const FamilyView& fam, const OsbConstants& c, int i, const osb::FamilyScratch& sc,
-                                   double theta, int n, double* force) {
+                                   double theta, int n, osb::Quad* force) {
   const int b0 = fam.offsets[i];
   const double* __restrict xr = fam.refLength + b0;
   const double* __restrict w = fam.influence + b0;
@@ -63,13 +95,13 @@ PF_INLINE void addNodeElasticForce(const FamilyView& fam, const OsbConstants& c,
 }
 
 template <bool Unit>
-PF_INLINE void elasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const double* y,
-                                         osb::FamilyScratch& sc, double* theta, double* force) {
+PF_INLINE void elasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const osb::NodeRecords& rec,
+                                         osb::FamilyScratch& sc, double* theta) {
   for (int i = fam.begin; i < fam.end; ++i) {
     osb::prefetchFamily(fam, i);
-    const int n = osb::gatherFamily(fam, y, i, sc);
+    const int n = osb::gatherFamily(fam, rec.pos, i, sc);
     theta[i] = nodeDilatation<Unit>(fam, c, i, sc, nullptr, n);
-    addNodeElasticForce<Unit>(fam, c, i, sc, theta[i], n, force);
+    addNodeElasticForce<Unit>(fam, c, i, sc, theta[i], n, rec.force);
   }
 }
 
@@ -78,8 +110,9 @@ PF_INLINE void elasticDilatationAndForce(const FamilyView& fam, const OsbConstan
 PF_KERNEL_CLONES void osbDilatation(const FamilyView& fam, const OsbConstants& c, const double* y, const double* edp,
                                     double* theta) {
   osb::FamilyScratch& sc = osb::familyScratch(fam);
+  const osb::NodeRecords rec = osb::nodeRecords(fam, y, nullptr);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const int n = osb::gatherFamily(fam, y, i, sc);
+    const int n = osb::gatherFamily(fam, rec.pos, i, sc);
     const double* ep = edp ? edp + fam.offsets[i] : nullptr;
     theta[i] = fam.unitInfluence ? nodeDilatation<true>(fam, c, i, sc, ep, n) : nodeDilatation<false>(fam, c, i, sc, ep, n);
   }
@@ -88,27 +121,32 @@ PF_KERNEL_CLONES void osbDilatation(const FamilyView& fam, const OsbConstants& c
 PF_KERNEL_CLONES void osbElasticForce(const FamilyView& fam, const OsbConstants& c, const double* y,
                                       const double* theta, double* force) {
   osb::FamilyScratch& sc = osb::familyScratch(fam);
+  const osb::NodeRecords rec = osb::nodeRecords(fam, y, force);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const int n = osb::gatherFamily(fam, y, i, sc);
-    if (fam.unitInfluence) addNodeElasticForce<true>(fam, c, i, sc, theta[i], n, force);
-    else addNodeElasticForce<false>(fam, c, i, sc, theta[i], n, force);
+    const int n = osb::gatherFamily(fam, rec.pos, i, sc);
+    if (fam.unitInfluence) addNodeElasticForce<true>(fam, c, i, sc, theta[i], n, rec.force);
+    else addNodeElasticForce<false>(fam, c, i, sc, theta[i], n, rec.force);
   }
+  osb::storeForces(fam, rec, force);
 }
 
 PF_KERNEL_CLONES void osbElasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const double* y,
                                                    double* theta, double* force) {
   osb::FamilyScratch& sc = osb::familyScratch(fam);
+  const osb::NodeRecords rec = osb::nodeRecords(fam, y, force);
   // One loop per influence kind, so that the omega = 1 one reads no influence array.
-  if (fam.unitInfluence) elasticDilatationAndForce<true>(fam, c, y, sc, theta, force);
-  else elasticDilatationAndForce<false>(fam, c, y, sc, theta, force);
+  if (fam.unitInfluence) elasticDilatationAndForce<true>(fam, c, rec, sc, theta);
+  else elasticDilatationAndForce<false>(fam, c, rec, sc, theta);
+  osb::storeForces(fam, rec, force);
 }
 
 void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, const double* y, const double* dy,
                                double* dforce) {
   const double* V = fam.volume;
   osb::FamilyScratch& sc = osb::familyScratch(fam);
+  const osb::NodeRecords rec = osb::nodeRecords(fam, y, nullptr);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const int nb = osb::gatherFamily(fam, y, i, sc);
+    const int nb = osb::gatherFamily(fam, rec.pos, i, sc);
     const int off = fam.offsets[i];
     const int* nbr = fam.neighbors + off;
     const double* x = fam.refLength + off;

@@ -89,6 +89,7 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
   const double KH = p.isoHardening + p.kinHardening;
 
   osb::FamilyScratch& scr = osb::familyScratch(fam);
+  const osb::NodeRecords rec = osb::nodeRecords(fam, y, force);
   const double* __restrict len = scr.len;
   const double* __restrict vj = scr.vj;
   double* __restrict tdv = scr.a;  // trial deviatoric force state
@@ -116,7 +117,7 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
     const double bm = c.B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
 
     // Bond vectors, lengths (one sqrt per bond and step) and neighbour volumes, once per node.
-    osb::gatherFamily(fam, y, i, scr);
+    osb::gatherFamily(fam, rec.pos, i, scr);
 
     // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
     // osbDilatation so that the elastic response is bit-identical to "Elastic".
@@ -213,8 +214,9 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
       const osb::Lanes x = ch.load(xr + k), l = ch.load(len + k, 1.0);
       return osb::weighted<Unit>(ch, w, k, iso * x + dev * ((l - x) - ch.load(ep + k))) / l;
     };
-    osb::addBondForces(fam, i, scr, inBlock, forceOverLength, force);
+    osb::addBondForces(fam, i, scr, inBlock, forceOverLength, rec.force);
   }
+  osb::storeForces(fam, rec, force);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@ struct BondFamily {
   std::vector<double> influence;   // omega(|xi|) of each bond
   std::vector<double> fraction;    // partial volume: share of V_j inside the horizon (empty = all 1)
   bool unitInfluence = false;      // every omega is exactly 1 (the kernels then skip the array)
+  int numNodes = 0;                // overlap nodes (owned + ghosts) the neighbour indices refer to
 
   int numOwned() const { return offsets.empty() ? 0 : static_cast<int>(offsets.size()) - 1; }
   std::size_t numBonds() const { return neighbors.size(); }
@@ -35,6 +36,7 @@ struct FamilyView {
   const double* fraction = nullptr;
   bool unitInfluence = false;       // influence[b] == 1 for every bond: kernels may skip reading it
   double horizon = 0.0;
+  int numNodes = 0;                 // size of the overlap node arrays (x, volume, y, force: per node)
 };
 
 inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,
@@ -52,6 +54,7 @@ inline FamilyView makeView(const BondFamily& f, int begin, int end, const double
   v.volume = volume;
   v.weightedVolume = m;
   v.horizon = horizon;
+  v.numNodes = f.numNodes;
   return v;
 }
 

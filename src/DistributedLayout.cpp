@@ -116,6 +116,7 @@ DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vect
     }
   for (int& j : family_.neighbors)
     if (j >= numOwned_) j = ghostIndex[j - numOwned_];
+  family_.numNodes = numOverlap();
 
   for (int i = 0; i < numOwned_; ++i) {
     const int b = block[owned[i]];

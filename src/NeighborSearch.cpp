@@ -16,6 +16,7 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
   family.neighbors.clear();
   family.refLength.clear();
   family.fraction.clear();
+  family.numNodes = n;
   if (numQueries == 0) return;
   double hmax = 0.0;
   for (int i = 0; i < numQueries; ++i) hmax = std::max(hmax, horizon[i]);

@@ -64,6 +64,7 @@ inline Lattice makeLattice(int n, bool planar, double dx, double ratio, double t
   std::vector<double> candidates(L.x);
   if (planar) candidates.insert(candidates.end(), {0.0, 0.0, 2.0 * L.horizon + dx});
   pf::buildFamilies(candidates, L.numQueries, std::vector<double>(L.numQueries, L.horizon), L.fam);
+  L.fam.numNodes = L.numNodes;  // the sentinel is not a node: x, volume, y and force hold numNodes
   L.fam.influence.resize(L.fam.numBonds());
   for (std::size_t b = 0; b < L.fam.numBonds(); ++b)
     L.fam.influence[b] = pf::influenceValue(infl, L.fam.refLength[b], L.horizon);
