@@ -115,8 +115,9 @@ struct FamilyScratch {
 };
 
 // A node's (y, V), or its force (f, 0), as one 32-byte record: the gather then reads a neighbour with
-// one vector load and the scatter updates it with one vector read-modify-write, where three scalar
-// ones each had cost 33 instructions per bond (BENCHMARKS.md, session 4).
+// one vector load and the scatter updates it with one vector read-modify-write. Gather and scatter took
+// 33 instructions per bond with per-component scalar accesses and take 25 with records (BENCHMARKS.md,
+// session 4).
 typedef double Quad __attribute__((vector_size(4 * sizeof(double))));
 
 struct NodeRecords {
@@ -125,7 +126,8 @@ struct NodeRecords {
 };
 
 // Thread-local records for the fam.numNodes overlap nodes: positions packed from y and fam.volume, and,
-// if force is not null, the force records loaded from it. Grown, never shrunk.
+// if force is not null, the force records loaded from it. Grown, never shrunk. A kernel that throws
+// before storeForces leaves force as it was.
 NodeRecords nodeRecords(const FamilyView& fam, const double* y, const double* force);
 
 // Writes the force records back to force (3 per node).

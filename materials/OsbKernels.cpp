@@ -1,8 +1,9 @@
 #include "OsbKernels.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
+#include <stdexcept>
 #include <vector>
 
 #include "OsbBondLoops.hpp"
@@ -42,6 +43,8 @@ Quad* recordBuffer(std::vector<double>& buf, std::size_t n) {
 
 NodeRecords nodeRecords(const FamilyView& fam, const double* y, const double* force) {
   thread_local std::vector<double> posBuf, forceBuf;
+  // Every family and owned node must lie inside the records (a view not made by makeView may lack it).
+  if (fam.numNodes < fam.end) throw std::logic_error("nodeRecords: FamilyView::numNodes is not set");
   const std::size_t n = static_cast<std::size_t>(fam.numNodes);
   Quad* pos = recordBuffer(posBuf, n);
   const double* V = fam.volume;
@@ -112,6 +115,8 @@ PF_KERNEL_CLONES void osbDilatation(const FamilyView& fam, const OsbConstants& c
   osb::FamilyScratch& sc = osb::familyScratch(fam);
   const osb::NodeRecords rec = osb::nodeRecords(fam, y, nullptr);
   for (int i = fam.begin; i < fam.end; ++i) {
+    const int ahead = osb::prefetchFamily(fam, i);
+    if (edp && ahead >= 0) osb::prefetchBondRange(fam, ahead, edp, false);
     const int n = osb::gatherFamily(fam, rec.pos, i, sc);
     const double* ep = edp ? edp + fam.offsets[i] : nullptr;
     theta[i] = fam.unitInfluence ? nodeDilatation<true>(fam, c, i, sc, ep, n) : nodeDilatation<false>(fam, c, i, sc, ep, n);
@@ -123,6 +128,7 @@ PF_KERNEL_CLONES void osbElasticForce(const FamilyView& fam, const OsbConstants&
   osb::FamilyScratch& sc = osb::familyScratch(fam);
   const osb::NodeRecords rec = osb::nodeRecords(fam, y, force);
   for (int i = fam.begin; i < fam.end; ++i) {
+    osb::prefetchFamily(fam, i);
     const int n = osb::gatherFamily(fam, rec.pos, i, sc);
     if (fam.unitInfluence) addNodeElasticForce<true>(fam, c, i, sc, theta[i], n, rec.force);
     else addNodeElasticForce<false>(fam, c, i, sc, theta[i], n, rec.force);

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "LatticeFixture.hpp"
@@ -123,6 +124,22 @@ double isotropicTheta(Dimension d, double nu, double eps) {
     case Dimension::PlaneStress: return (1 - 2 * nu) / (1 - nu) * 2 * eps;  // 3D volume strain, s_zz = 0
   }
   return 0;
+}
+
+// The kernels pack the overlap nodes into records; a view that does not say how many there are must be
+// refused, not read past its arrays.
+TEST(ElasticOsbKernels, ViewWithoutNodeCountIsRefused) {
+  const Lattice L = makeLattice(5, false, kDx, 1.5, kH, Influence::One, false);
+  auto mat = makeElastic(Dimension::ThreeD, kE, kNu, kH);
+  std::vector<double> theta(L.numNodes, 0.0), force(3 * L.numNodes, 0.0);
+  pf::FamilyView v = L.view();
+  ASSERT_EQ(v.numNodes, L.numNodes);
+  pf::osbDilatation(v, mat->constants(), L.x.data(), nullptr, theta.data());
+  EXPECT_NEAR(theta[0], 0.0, 1e-12);  // undeformed
+  v.numNodes = 0;
+  EXPECT_THROW(pf::osbDilatation(v, mat->constants(), L.x.data(), nullptr, theta.data()), std::logic_error);
+  EXPECT_THROW(pf::osbElasticDilatationAndForce(v, mat->constants(), L.x.data(), theta.data(), force.data()),
+               std::logic_error);
 }
 
 TEST(ElasticOsbDilatation, IsotropicStretchIsExact) {
