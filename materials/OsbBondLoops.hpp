@@ -166,6 +166,24 @@ PF_INLINE int prefetchFamily(const FamilyView& fam, int i) {
   return ahead;
 }
 
+PF_INLINE Quad loadQuad(const double* p) {
+  Quad v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+PF_INLINE void storeQuad(double* p, const Quad& v) { std::memcpy(p, &v, sizeof v); }
+
+// Transposes the 4x4 block whose rows are a, b, c, d (8 shuffles): four bonds' records become four
+// component vectors, and back. Moves values only, so the results keep their bits.
+PF_INLINE void transpose4(Quad& a, Quad& b, Quad& c, Quad& d) {
+  const Quad ab0 = __builtin_shufflevector(a, b, 0, 4, 2, 6), ab1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+  const Quad cd0 = __builtin_shufflevector(c, d, 0, 4, 2, 6), cd1 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+  a = __builtin_shufflevector(ab0, cd0, 0, 1, 4, 5);
+  b = __builtin_shufflevector(ab1, cd1, 0, 1, 4, 5);
+  c = __builtin_shufflevector(ab0, cd0, 2, 3, 6, 7);
+  d = __builtin_shufflevector(ab1, cd1, 2, 3, 6, 7);
+}
+
 // Gathers node i's family into the scratch; returns its size.
 PF_INLINE int gatherFamily(const FamilyView& fam, const Quad* __restrict pos, int i, FamilyScratch& sc) {
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
@@ -177,27 +195,37 @@ PF_INLINE int gatherFamily(const FamilyView& fam, const Quad* __restrict pos, in
   double* __restrict vj = sc.vj;
   Quad yi = pos[i];
   yi[3] = 0.0;  // so that the fourth lane passes V_j through unchanged
-  // One vector load and subtraction per neighbour; only the sqrt loop is vectorized across bonds: on
-  // the AMD EPYC of BENCHMARKS.md (session 4) the AVX-512 gathers ran the kernel 11 % slower than
-  // scalar loads. std::sqrt vectorizes because the kernel sources are compiled with -fno-math-errno,
-  // and sqrtpd rounds exactly as sqrtsd.
-  for (int k = 0; k < n; ++k) {
+  // Four neighbours at a time: one record load and subtraction each, then a register transpose into
+  // the component arrays (4 stores per 4 bonds, where per-bond component stores took 4 per bond; on the
+  // AMD EPYC of BENCHMARKS.md, session 4, AVX-512 gathers instead of the record loads ran 11 % slower).
+  // len holds |y_j - y_i|^2 until the sqrt loop, summed in the order of the scalar tail.
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    Quad r0 = pos[nb[k]] - yi, r1 = pos[nb[k + 1]] - yi, r2 = pos[nb[k + 2]] - yi, r3 = pos[nb[k + 3]] - yi;
+    transpose4(r0, r1, r2, r3);
+    storeQuad(d0 + k, r0); storeQuad(d1 + k, r1); storeQuad(d2 + k, r2); storeQuad(vj + k, r3);
+    storeQuad(len + k, r0 * r0 + r1 * r1 + r2 * r2);
+  }
+  for (; k < n; ++k) {
     const Quad r = pos[nb[k]] - yi;
     d0[k] = r[0]; d1[k] = r[1]; d2[k] = r[2];
     vj[k] = r[3];
+    len[k] = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
   }
+  // std::sqrt vectorizes because the kernel sources are compiled with -fno-math-errno, and sqrtpd
+  // rounds exactly as sqrtsd.
 #pragma omp simd
-  for (int k = 0; k < n; ++k) len[k] = std::sqrt(d0[k] * d0[k] + d1[k] * d1[k] + d2[k] * d2[k]);
+  for (int b = 0; b < n; ++b) len[b] = std::sqrt(len[b]);
   // Partial volumes: the neighbour counts with the share of its cell inside the horizon.
   if (fam.fraction) {
     const double* __restrict fr = fam.fraction + b0;
-    for (int k = 0; k < n; ++k) vj[k] *= fr[k];
+    for (int b = 0; b < n; ++b) vj[b] *= fr[b];
   }
   // Padding of the last chunk (see PaddedTail).
-  for (int k = n; k < roundUpToLanes(n); ++k) {
-    d0[k] = d1[k] = d2[k] = 0.0;
-    len[k] = 1.0;
-    vj[k] = 0.0;
+  for (int b = n; b < roundUpToLanes(n); ++b) {
+    d0[b] = d1[b] = d2[b] = 0.0;
+    len[b] = 1.0;
+    vj[b] = 0.0;
   }
   return n;
 }
@@ -237,23 +265,36 @@ PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& 
                              ForceOverLength&& forceOverLength, Quad* __restrict force) {
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
   const int* __restrict nb = fam.neighbors + b0;
-  const double Vi = fam.volume[i];
+  // The reaction -t V_i is stored negated and added (x - y == x + (-y) exactly): an addition can take
+  // the record from memory, a subtraction from it cannot.
+  const double mVi = -fam.volume[i];
   Lanes a0 = {}, a1 = {}, a2 = {};
   forEachChunk(n, inBlock, [&](int k, auto c) {
     // Padded lanes: y_j - y_i = 0 and len = 1 there, so s is finite and t0..t2 vanish.
     const Lanes sk = forceOverLength(k, c), vj = c.load(sc.vj + k);
     const Lanes t0 = sk * c.load(sc.d0 + k), t1 = sk * c.load(sc.d1 + k), t2 = sk * c.load(sc.d2 + k);
     a0 += t0 * vj; a1 += t1 * vj; a2 += t2 * vj;
-    FullChunk{}.store(sc.g0 + k, t0 * Vi); FullChunk{}.store(sc.g1 + k, t1 * Vi); FullChunk{}.store(sc.g2 + k, t2 * Vi);
+    FullChunk{}.store(sc.g0 + k, t0 * mVi); FullChunk{}.store(sc.g1 + k, t1 * mVi); FullChunk{}.store(sc.g2 + k, t2 * mVi);
   });
   const double* __restrict g0 = sc.g0;
   const double* __restrict g1 = sc.g1;
   const double* __restrict g2 = sc.g2;
-  if (fam.fraction) {  // the reaction on j carries the same share of the bond as f_i (V_j fr)
-    const double* __restrict fr = fam.fraction + b0;
-    for (int k = 0; k < n; ++k) force[nb[k]] -= Quad{g0[k] * fr[k], g1[k] * fr[k], g2[k] * fr[k], 0.0};
-  } else {
-    for (int k = 0; k < n; ++k) force[nb[k]] -= Quad{g0[k], g1[k], g2[k], 0.0};
+  // Four bonds at a time, transposed back into records: one read-modify-write per neighbour. Partial
+  // volumes: the reaction on j carries the same share of the bond as f_i (V_j fr).
+  const double* __restrict fr = fam.fraction ? fam.fraction + b0 : nullptr;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    Quad q0 = loadQuad(g0 + k), q1 = loadQuad(g1 + k), q2 = loadQuad(g2 + k), q3 = {};
+    if (fr) {
+      const Quad f = loadQuad(fr + k);
+      q0 *= f; q1 *= f; q2 *= f;
+    }
+    transpose4(q0, q1, q2, q3);
+    force[nb[k]] += q0; force[nb[k + 1]] += q1; force[nb[k + 2]] += q2; force[nb[k + 3]] += q3;
+  }
+  for (; k < n; ++k) {
+    const double f = fr ? fr[k] : 1.0;  // g * 1 == g exactly
+    force[nb[k]] += Quad{g0[k] * f, g1[k] * f, g2[k] * f, 0.0};
   }
   force[i] += Quad{laneSum(a0), laneSum(a1), laneSum(a2), 0.0};
 }
