@@ -198,24 +198,23 @@ PF_INLINE int gatherFamily(const FamilyView& fam, const Quad* __restrict pos, in
   // Four neighbours at a time: one record load and subtraction each, then a register transpose into
   // the component arrays (4 stores per 4 bonds, where per-bond component stores took 4 per bond; on the
   // AMD EPYC of BENCHMARKS.md, session 4, AVX-512 gathers instead of the record loads ran 11 % slower).
-  // len holds |y_j - y_i|^2 until the sqrt loop, summed in the order of the scalar tail.
+  // The sqrt sits in this loop so that it overlaps the loads and shuffles (a loop of sqrts alone waits on
+  // the divider); std::sqrt vectorizes (-fno-math-errno on the kernel sources) and sqrtpd rounds as
+  // sqrtsd, so the tail's scalar sqrt gives the same bits.
   int k = 0;
   for (; k + 4 <= n; k += 4) {
     Quad r0 = pos[nb[k]] - yi, r1 = pos[nb[k + 1]] - yi, r2 = pos[nb[k + 2]] - yi, r3 = pos[nb[k + 3]] - yi;
     transpose4(r0, r1, r2, r3);
     storeQuad(d0 + k, r0); storeQuad(d1 + k, r1); storeQuad(d2 + k, r2); storeQuad(vj + k, r3);
-    storeQuad(len + k, r0 * r0 + r1 * r1 + r2 * r2);
+    const Quad l2 = r0 * r0 + r1 * r1 + r2 * r2;
+    storeQuad(len + k, Quad{std::sqrt(l2[0]), std::sqrt(l2[1]), std::sqrt(l2[2]), std::sqrt(l2[3])});
   }
   for (; k < n; ++k) {
     const Quad r = pos[nb[k]] - yi;
     d0[k] = r[0]; d1[k] = r[1]; d2[k] = r[2];
     vj[k] = r[3];
-    len[k] = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    len[k] = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
   }
-  // std::sqrt vectorizes because the kernel sources are compiled with -fno-math-errno, and sqrtpd
-  // rounds exactly as sqrtsd.
-#pragma omp simd
-  for (int b = 0; b < n; ++b) len[b] = std::sqrt(len[b]);
   // Partial volumes: the neighbour counts with the share of its cell inside the horizon.
   if (fam.fraction) {
     const double* __restrict fr = fam.fraction + b0;
@@ -268,17 +267,23 @@ PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& 
   // The reaction -t V_i is stored negated and added (x - y == x + (-y) exactly): an addition can take
   // the record from memory, a subtraction from it cannot.
   const double mVi = -fam.volume[i];
+  // Local copies of the scratch pointers: the stores (memcpy) could alias sc itself, which would reload
+  // every pointer in every chunk.
+  const double* __restrict d0 = sc.d0;
+  const double* __restrict d1 = sc.d1;
+  const double* __restrict d2 = sc.d2;
+  const double* __restrict vjs = sc.vj;
+  double* __restrict g0 = sc.g0;
+  double* __restrict g1 = sc.g1;
+  double* __restrict g2 = sc.g2;
   Lanes a0 = {}, a1 = {}, a2 = {};
   forEachChunk(n, inBlock, [&](int k, auto c) {
     // Padded lanes: y_j - y_i = 0 and len = 1 there, so s is finite and t0..t2 vanish.
-    const Lanes sk = forceOverLength(k, c), vj = c.load(sc.vj + k);
-    const Lanes t0 = sk * c.load(sc.d0 + k), t1 = sk * c.load(sc.d1 + k), t2 = sk * c.load(sc.d2 + k);
+    const Lanes sk = forceOverLength(k, c), vj = c.load(vjs + k);
+    const Lanes t0 = sk * c.load(d0 + k), t1 = sk * c.load(d1 + k), t2 = sk * c.load(d2 + k);
     a0 += t0 * vj; a1 += t1 * vj; a2 += t2 * vj;
-    FullChunk{}.store(sc.g0 + k, t0 * mVi); FullChunk{}.store(sc.g1 + k, t1 * mVi); FullChunk{}.store(sc.g2 + k, t2 * mVi);
+    FullChunk{}.store(g0 + k, t0 * mVi); FullChunk{}.store(g1 + k, t1 * mVi); FullChunk{}.store(g2 + k, t2 * mVi);
   });
-  const double* __restrict g0 = sc.g0;
-  const double* __restrict g1 = sc.g1;
-  const double* __restrict g2 = sc.g2;
   // Four bonds at a time, transposed back into records: one read-modify-write per neighbour. Partial
   // volumes: the reaction on j carries the same share of the bond as f_i (V_j fr).
   const double* __restrict fr = fam.fraction ? fam.fraction + b0 : nullptr;
