@@ -1,5 +1,6 @@
 #include "OsbPlasticKernels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -131,7 +132,7 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
     // Split t^d = t_perp + pp x with t_perp . x = 0: the two parts decay at different rates in plane
     // stress, and only pp enters the 2D (t.x)^2 term.
     const double pp = Sx / Xx;
-    const double Pperp = std::fmax(S2 - pp * pp * Xx, 0.0);
+    const double Pperp = std::max(S2 - pp * pp * Xx, 0.0);  // std::fmax is a libm call
     const double Ppar = pp * pp * Xx * (1.0 + 2.0 * yc.a2 * Xx);
     const double psiTr = 0.5 * (Pperp + Ppar);
     const double vmTr = std::sqrt(psiTr / yc.Cy);  // Eq. 20 (3D with /2, see design doc), 2D analogue
