@@ -10,42 +10,9 @@
 
 #include "NeighborSearch.hpp"
 #include "PartialVolume.hpp"
+#include "SpaceFillingCurve.hpp"
 
 namespace pf {
-namespace {
-
-std::uint64_t spreadBits(std::uint64_t v) {  // 21 bits -> every third bit
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffULL;
-  v = (v | v << 16) & 0x1f0000ff0000ffULL;
-  v = (v | v << 8) & 0x100f00f00f00f00fULL;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
-  v = (v | v << 2) & 0x1249249249249249ULL;
-  return v;
-}
-
-// Morton keys on the cloud's bounding box: points close in space get close keys.
-std::vector<std::uint64_t> mortonKeys(const std::vector<double>& coords) {
-  const std::size_t n = coords.size() / 3;
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-  for (std::size_t p = 0; p < n; ++p)
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], coords[3 * p + d]);
-      hi[d] = std::max(hi[d], coords[3 * p + d]);
-    }
-  double scale = 0;
-  for (int d = 0; d < 3; ++d) scale = std::max(scale, hi[d] - lo[d]);
-  scale = scale > 0 ? 2097151.0 / scale : 0.0;
-  std::vector<std::uint64_t> key(n);
-  for (std::size_t p = 0; p < n; ++p) {
-    std::uint64_t k = 0;
-    for (int d = 0; d < 3; ++d) k |= spreadBits(static_cast<std::uint64_t>((coords[3 * p + d] - lo[d]) * scale)) << d;
-    key[p] = k;
-  }
-  return key;
-}
-
-}  // namespace
 
 DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords,
                                      const std::vector<int>& owner, const std::vector<double>& horizon,
@@ -54,7 +21,7 @@ DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vect
     : comm_(comm) {
   const int me = comm_.MyPID();
   numGlobal_ = static_cast<int>(owner.size());
-  const std::vector<std::uint64_t> key = mortonKeys(coords);
+  const std::vector<std::uint64_t> key = hilbertKeys(coords);
 
   std::vector<int> owned;
   for (int p = 0; p < numGlobal_; ++p)

@@ -1,7 +1,7 @@
 #pragma once
 // The one place Periforge touches Epetra: owned and overlap (owned + ghost) maps of the points, the
 // Import that copies owned values to ghosts and the Export that adds ghost contributions back. Owned
-// points are ordered by block, then along a Morton curve, so a family sits close in memory; bonds of
+// points are ordered by block, then along a Hilbert curve, so a family sits close in memory; bonds of
 // the owned points are built here once, on reference positions, in overlap-local indices.
 #include <Epetra_BlockMap.h>
 #include <Epetra_Export.h>
