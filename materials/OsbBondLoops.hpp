@@ -116,8 +116,8 @@ struct FamilyScratch {
 
 // A node's (y, V), or its force (f, 0), as one 32-byte record: the gather then reads a neighbour with
 // one vector load and the scatter updates it with one vector read-modify-write. Gather and scatter took
-// 33 instructions per bond with per-component scalar accesses and take 25 with records (BENCHMARKS.md,
-// session 4).
+// 33 instructions per bond with per-component scalar accesses, 25 with records (BENCHMARKS.md, session
+// 4) and take about 18 with records moved four at a time through register transposes (session 5).
 typedef double Quad __attribute__((vector_size(4 * sizeof(double))));
 
 struct NodeRecords {
