@@ -18,8 +18,8 @@ struct Cell {
   std::array<int, 3> ijk;
 };
 
-// The cells of an s^3 cube (s a power of 2) placed in the top corner of the key space, where the curve's
-// top-level subcube holds them; sorted by key.
+// The cells of an s^3 cube (s a power of 2) at the origin, where the curve starts, so they are its first
+// s^3 positions; sorted by key.
 std::vector<Cell> sortedCells(int s) {
   std::vector<Cell> cells;
   for (int i = 0; i < s; ++i)
@@ -38,7 +38,6 @@ TEST(SpaceFillingCurve, HilbertKeysAreDistinct) {
 TEST(SpaceFillingCurve, ConsecutiveHilbertCellsAreFaceNeighbours) {
   for (int s : {2, 4, 8, 16}) {
     const std::vector<Cell> cells = sortedCells(s);
-    // The s^3 cells near the origin are the first s^3 positions of the curve.
     for (std::size_t n = 1; n < cells.size(); ++n) {
       int dist = 0;
       for (int d = 0; d < 3; ++d) dist += std::abs(cells[n].ijk[d] - cells[n - 1].ijk[d]);
@@ -47,7 +46,7 @@ TEST(SpaceFillingCurve, ConsecutiveHilbertCellsAreFaceNeighbours) {
   }
 }
 
-TEST(SpaceFillingCurve, KeysOfAPointCloudFollowTheCurve) {
+TEST(SpaceFillingCurve, KeysOfAPointCloudIgnoreAShiftAndStayDistinct) {
   // A 4^3 lattice and the same lattice shifted: the keys depend on the positions relative to the
   // bounding box only, and distinct points get distinct keys.
   std::vector<double> a, b;
