@@ -12,6 +12,7 @@
 // adds in the same order and gives bit-identical results.
 #include <cmath>
 #include <cstring>
+#include <type_traits>
 
 #include "BondFamily.hpp"
 
@@ -40,6 +41,13 @@ constexpr int kLanes = 8;
 // kLanes doubles as one value (GCC vector extension): the compiler maps it onto whatever vector width
 // the clone has and keeps the partial sums in registers.
 typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
+
+// |v| per lane by clearing the sign bit (exact, as fabs). A vector `v < 0 ? -v : v` compiles to one
+// masked negation on AVX-512 but is taken apart lane by lane, through the stack, on AVX2 and SSE2.
+typedef long long LaneBits __attribute__((vector_size(kLanes * sizeof(long long))));
+PF_INLINE Lanes absLanes(const Lanes& v) {
+  return reinterpret_cast<Lanes>(reinterpret_cast<LaneBits>(v) & (LaneBits{} + 0x7fffffffffffffffLL));
+}
 
 // Loads and stores of kLanes bonds starting at p.
 struct FullChunk {
@@ -238,20 +246,34 @@ PF_INLINE Lanes weighted(const Chunk& c, const double* __restrict w, int k, cons
 }
 
 // sum_k omega_k x_k (len_k - x_k - ep_k) V_k over the family (ep null: no plastic extension); inBlock
-// from chunksStayInBlock. Each term is omega x (e - e^dp) V_j (Eqs. 4/16), e = len - x.
+// from chunksStayInBlock. Each term is omega x (e - e^dp) V_j (Eqs. 4/16), e = len - x. With xx, the same
+// pass also stores sum_k x_k^2 V_k there (the J2 kernel's x.x moment: as a fifth sum of its trial pass it
+// spilled that pass's partial sums to the stack in the AVX2 clone, which has 16 vector registers).
 template <bool Unit>
 PF_INLINE double dilatationSum(const double* __restrict w, const double* __restrict x, const double* __restrict len,
-                               const double* __restrict ep, const double* __restrict vj, int n, bool inBlock) {
-  Lanes acc = {};
-  if (ep)
+                               const double* __restrict ep, const double* __restrict vj, int n, bool inBlock,
+                               double* xx = nullptr) {
+  Lanes acc = {}, sxx = {};
+  auto sum = [&](auto withEp, auto withXx) {
     forEachChunk(n, inBlock, [&](int k, auto c) {
-      acc += weighted<Unit>(c, w, k, c.load(x + k)) * ((c.load(len + k) - c.load(x + k)) - c.load(ep + k)) *
-             c.load(vj + k);
+      const Lanes xk = c.load(x + k), vk = c.load(vj + k);
+      if constexpr (decltype(withEp)::value)
+        acc += weighted<Unit>(c, w, k, xk) * ((c.load(len + k) - xk) - c.load(ep + k)) * vk;
+      else
+        acc += weighted<Unit>(c, w, k, xk) * (c.load(len + k) - xk) * vk;
+      if constexpr (decltype(withXx)::value) sxx += xk * xk * vk;
     });
-  else
-    forEachChunk(n, inBlock, [&](int k, auto c) {
-      acc += weighted<Unit>(c, w, k, c.load(x + k)) * (c.load(len + k) - c.load(x + k)) * c.load(vj + k);
-    });
+  };
+  using Yes = std::true_type;
+  using No = std::false_type;
+  if (xx) {
+    if (ep) sum(Yes{}, Yes{});
+    else sum(No{}, Yes{});
+    *xx = laneSum(sxx);
+  } else {
+    if (ep) sum(Yes{}, No{});
+    else sum(No{}, No{});
+  }
   return laneSum(acc);
 }
 

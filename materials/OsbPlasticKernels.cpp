@@ -28,10 +28,10 @@ YieldConstants yieldConstants(Dimension dim, double my) {
   return {4.0 / (3.0 * my), 16.0 / (3.0 * my), 2.5 / my};
 }
 
-// Moments of the trial deviatoric force state over the family (Eqs. 31, 40-41): |t|^2, t.x, the third
-// moment and its absolute value (sign of sigma_vm), x.x.
+// Moments of the trial deviatoric force state over the family (Eqs. 31, 40-41): |t|^2, t.x, and the
+// third moment and its absolute value (sign of sigma_vm); x.x comes from osb::dilatationSum.
 struct TrialMoments {
-  double S2, Sx, S3, A3, Xx;
+  double S2, Sx, S3, A3;
 };
 
 // Writes the trial deviatoric force state t^d_tr = omega bm (e - c theta_tr x - e^dp_n) (Eqs. 40-41) to
@@ -41,16 +41,16 @@ PF_INLINE TrialMoments trialDeviatoricState(const double* __restrict w, const do
                                             const double* __restrict len, const double* __restrict epN,
                                             const double* __restrict vj, double bm, double cth, int n,
                                             bool inBlock, double* __restrict tdv) {
-  osb::Lanes S2 = {}, Sx = {}, S3 = {}, A3 = {}, Xx = {};
+  osb::Lanes S2 = {}, Sx = {}, S3 = {}, A3 = {};
   osb::forEachChunk(n, inBlock, [&](int k, auto c) {
     const osb::Lanes x = c.load(xr + k), v = c.load(vj + k);
     const osb::Lanes bmv = osb::Lanes{} + bm;
     const osb::Lanes td = osb::weighted<Unit>(c, w, k, bmv) * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
     const osb::Lanes tv = td * v;
     osb::FullChunk{}.store(tdv + k, td);  // scratch: padded to whole chunks
-    S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += (td < 0 ? -td : td) * td * tv; Xx += x * x * v;
+    S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += osb::absLanes(td) * td * tv;
   });
-  return {osb::laneSum(S2), osb::laneSum(Sx), osb::laneSum(S3), osb::laneSum(A3), osb::laneSum(Xx)};
+  return {osb::laneSum(S2), osb::laneSum(Sx), osb::laneSum(S3), osb::laneSum(A3)};
 }
 
 // e^dp_n+1 = e^dp_n + a1 (t^d - pp x) + a2 x (Eqs. 52, 58: the returned t_perp and pp x scaled by
@@ -122,13 +122,15 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
 
     // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
     // osbDilatation so that the elastic response is bit-identical to "Elastic".
-    double sum = osb::dilatationSum<Unit>(w, xr, len, beta ? epN : nullptr, vj, n, inBlock);
+    // x.x (Eq. 41) comes out of the same pass.
+    double Xx = 0.0;
+    double sum = osb::dilatationSum<Unit>(w, xr, len, beta ? epN : nullptr, vj, n, inBlock, &Xx);
     const double thetaTr = c.k * c.D * sum / m;
 
     // Trial deviatoric force state (Eqs. 40-41) and its moments.
     const double cth = c.c * thetaTr;
     const TrialMoments mo = trialDeviatoricState<Unit>(w, xr, len, epN, vj, bm, cth, n, inBlock, tdv);
-    const double S2 = mo.S2, Sx = mo.Sx, S3 = mo.S3, A3 = mo.A3, Xx = mo.Xx;
+    const double S2 = mo.S2, Sx = mo.Sx, S3 = mo.S3, A3 = mo.A3;
     // Split t^d = t_perp + pp x with t_perp . x = 0: the two parts decay at different rates in plane
     // stress, and only pp enters the 2D (t.x)^2 term.
     const double pp = Sx / Xx;
