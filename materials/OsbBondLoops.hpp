@@ -11,6 +11,7 @@
 // its own vector width. Reductions keep kLanes partial sums whatever that width is, so every clone
 // adds in the same order and gives bit-identical results.
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <type_traits>
 
@@ -172,6 +173,26 @@ PF_INLINE int prefetchFamily(const FamilyView& fam, int i) {
   if (!fam.unitInfluence) prefetchBondRange(fam, ahead, fam.influence, false);
   if (fam.fraction) prefetchBondRange(fam, ahead, fam.fraction, false);
   return ahead;
+}
+
+// Software prefetch of the position and force records of the neighbours of node i + 1, a node ahead of
+// its gather and scatter. It pays only where the records overflow the per-core L2: the J2 kernel ran 8 %
+// faster on the 40^3 cube and 5-13 % faster on the 80^3 one (4-16 MB of records), but 13 % slower on a
+// 16^3 cube (256 kB of records, already in L2), where it only adds three instructions per bond
+// (BENCHMARKS.md, session 6). Hence the size test; 1 MiB is the L2 of the AMD EPYC measured there.
+constexpr std::size_t kRecordPrefetchBytes = std::size_t(1) << 20;
+PF_INLINE bool prefetchRecordsPays(const FamilyView& fam, const NodeRecords& rec) {
+  return rec.force && 2 * sizeof(Quad) * static_cast<std::size_t>(fam.numNodes) > kRecordPrefetchBytes;
+}
+PF_INLINE void prefetchNeighbourRecords(const FamilyView& fam, const NodeRecords& rec, int i) {
+  const int next = i + 1;
+  if (next >= fam.end) return;
+  const int* __restrict nb = fam.neighbors;
+  const int b1 = fam.offsets[next + 1];
+  for (int b = fam.offsets[next]; b < b1; ++b) {
+    __builtin_prefetch(rec.pos + nb[b], 0, 3);
+    __builtin_prefetch(rec.force + nb[b], 1, 3);
+  }
 }
 
 PF_INLINE Quad loadQuad(const double* p) {

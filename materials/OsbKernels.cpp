@@ -100,8 +100,10 @@ PF_INLINE void addNodeElasticForce(const FamilyView& fam, const OsbConstants& c,
 template <bool Unit>
 PF_INLINE void elasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, const osb::NodeRecords& rec,
                                          osb::FamilyScratch& sc, double* theta) {
+  const bool prefetchRecords = osb::prefetchRecordsPays(fam, rec);
   for (int i = fam.begin; i < fam.end; ++i) {
     osb::prefetchFamily(fam, i);
+    if (prefetchRecords) osb::prefetchNeighbourRecords(fam, rec, i);
     const int n = osb::gatherFamily(fam, rec.pos, i, sc);
     theta[i] = nodeDilatation<Unit>(fam, c, i, sc, nullptr, n);
     addNodeElasticForce<Unit>(fam, c, i, sc, theta[i], n, rec.force);

@@ -94,6 +94,7 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
   const double* __restrict len = scr.len;
   const double* __restrict vj = scr.vj;
   double* __restrict tdv = scr.a;  // trial deviatoric force state
+  const bool prefetchRecords = osb::prefetchRecordsPays(fam, rec);
 
   for (int i = fam.begin; i < fam.end; ++i) {
     const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
@@ -107,6 +108,7 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
       osb::prefetchBondRange(fam, ahead, s.edpN, false);
       osb::prefetchBondRange(fam, ahead, s.edp, true);
     }
+    if (prefetchRecords) osb::prefetchNeighbourRecords(fam, rec, i);
     const double m = fam.weightedVolume[i];
     const double invm = 1.0 / m;
     double my = m;
