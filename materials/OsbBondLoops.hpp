@@ -40,7 +40,9 @@ namespace osb {
 constexpr int kLanes = 8;
 
 // kLanes doubles as one value (GCC vector extension): the compiler maps it onto whatever vector width
-// the clone has and keeps the partial sums in registers.
+// the clone has. Only the AVX-512 clone keeps such values in registers: without a native 64-byte vector
+// GCC 12 gives them no register mode, so the AVX2 and baseline clones keep partial sums on the stack and
+// the AVX2 build ran 2.6-2.9x slower than the AVX-512 clone (BENCHMARKS.md, session 6).
 typedef double Lanes __attribute__((vector_size(kLanes * sizeof(double))));
 
 // |v| per lane by clearing the sign bit (exact, as fabs). A vector `v < 0 ? -v : v` compiles to one
