@@ -1,0 +1,41 @@
+# The bond kernels give the same bits on every instruction set (OsbBondLoops.hpp: fixed 8-lane partial
+# sums, no FMA contraction). On an AVX-512 machine the dispatching build runs only its AVX-512 clone, so
+# periforge-isa-baseline and periforge-isa-avx2 (CMakeLists.txt, kernels compiled for one instruction set)
+# run the code of the other two copies, and each deck's Exodus output must match the dispatching build's
+# exactly (same_bits.comp). Decks: J2 with mixed hardening in 3D (Verlet), plane stress and plane strain
+# (ADR); elastic Verlet (the fused kernel); elastic NOX (dilatation, force and derivative kernels);
+# partial volumes.
+if(NOT PERIFORGE_KERNEL_ISAS)
+  return()
+endif()
+set(isa_cases
+  j2_cube_verlet   ${REG}/kernel_isa/j2_cube_verlet.xml
+  j2_plane_stress  ${REG}/kernel_isa/j2_plane_stress.xml
+  j2_plane_strain  ${REG}/kernel_isa/j2_plane_strain.xml
+  bar_verlet       ${REG}/bar/bar_verlet.xml
+  bar_3d_nox       ${REG}/bar/bar_3d_nox.xml
+  patch_3d_pv      ${REG}/patch/patch_3d_pv.xml)
+list(LENGTH isa_cases n)
+math(EXPR last "${n} - 1")
+foreach(k RANGE 0 ${last} 2)
+  math(EXPR kd "${k} + 1")
+  list(GET isa_cases ${k} case)
+  list(GET isa_cases ${kd} deck)
+  get_filename_component(out ${deck} NAME_WE)
+  periforge_run(isa_${case}_dispatch ${deck} 1)
+  foreach(isa ${PERIFORGE_KERNEL_ISAS})
+    set(name isa_${case}_${isa})
+    set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
+    file(MAKE_DIRECTORY ${wd})
+    set(flag sse4_2)
+    if(isa STREQUAL "avx2")
+      set(flag avx2)
+    endif()
+    add_test(NAME ${name} COMMAND ${PY} ${REG}/kernel_isa/run_if_cpu_has.py ${flag}
+             ${MPIRUN} -np 1 $<TARGET_FILE:periforge-isa-${isa}> ${deck} WORKING_DIRECTORY ${wd})
+    set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name} LABELS "regression" SKIP_RETURN_CODE 77)
+    periforge_check(${name}_same_bits "isa_${case}_dispatch;${name}"
+      ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${wd}/${out}.e
+      ${CMAKE_CURRENT_BINARY_DIR}/regression/isa_${case}_dispatch/${out}.e ${REG}/kernel_isa/same_bits.comp)
+  endforeach()
+endforeach()
