@@ -178,10 +178,11 @@ PF_INLINE int prefetchFamily(const FamilyView& fam, int i) {
 }
 
 // Software prefetch of the position and force records of the neighbours of node i + 1, a node ahead of
-// its gather and scatter. It pays only where the records overflow the per-core L2: the J2 kernel ran 8 %
-// faster on the 40^3 cube and 5-13 % faster on the 80^3 one (4-16 MB of records), but 13 % slower on a
-// 16^3 cube (256 kB of records, already in L2), where it only adds three instructions per bond
-// (BENCHMARKS.md, session 6). Hence the size test; 1 MiB is the L2 of the AMD EPYC measured there.
+// its gather and scatter. It pays only where the records overflow the per-core L2: the J2 kernel ran 8-9 %
+// faster on the 40^3 cube and 2-13 % faster on the 80^3 one (4 and 32 MB of records; the host's noise is
+// that wide), the elastic one 5 % at 80^3, but the J2 kernel ran 13 % slower on a 16^3 cube (256 kB of
+// records, already in L2), where the prefetch only adds three instructions per bond (BENCHMARKS.md,
+// session 6). Hence the size test; 1 MiB is the L2 of the AMD EPYC measured there.
 constexpr std::size_t kRecordPrefetchBytes = std::size_t(1) << 20;
 PF_INLINE bool prefetchRecordsPays(const FamilyView& fam, const NodeRecords& rec) {
   return rec.force && 2 * sizeof(Quad) * static_cast<std::size_t>(fam.numNodes) > kRecordPrefetchBytes;
