@@ -3,11 +3,16 @@
 set(PY /usr/bin/python3)
 set(REG ${CMAKE_CURRENT_SOURCE_DIR}/regression)
 
-# periforge_run(NAME DECK NP): runs DECK at NP ranks in build/test/regression/NAME as a fixture.
+# periforge_run(NAME DECK NP [EXE exe] [LAUNCHER cmd...]): runs DECK at NP ranks in
+# build/test/regression/NAME as a fixture; EXE replaces periforge, LAUNCHER runs before mpirun.
 function(periforge_run name deck np)
+  cmake_parse_arguments(PARSE_ARGV 3 run "" "EXE" "LAUNCHER")
+  if(NOT run_EXE)
+    set(run_EXE ${PERIFORGE_EXE})
+  endif()
   set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
   file(MAKE_DIRECTORY ${wd})
-  add_test(NAME ${name} COMMAND ${MPIRUN} -np ${np} ${PERIFORGE_EXE} ${deck} WORKING_DIRECTORY ${wd})
+  add_test(NAME ${name} COMMAND ${run_LAUNCHER} ${MPIRUN} -np ${np} ${run_EXE} ${deck} WORKING_DIRECTORY ${wd})
   set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name} LABELS "regression" PROCESSORS ${np})
 endfunction()
 

@@ -25,17 +25,15 @@ foreach(k RANGE 0 ${last} 2)
   periforge_run(isa_${case}_dispatch ${deck} 1)
   foreach(isa ${PERIFORGE_KERNEL_ISAS})
     set(name isa_${case}_${isa})
-    set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
-    file(MAKE_DIRECTORY ${wd})
     set(flag sse4_2)
     if(isa STREQUAL "avx2")
       set(flag avx2)
     endif()
-    add_test(NAME ${name} COMMAND ${PY} ${REG}/kernel_isa/run_if_cpu_has.py ${flag}
-             ${MPIRUN} -np 1 $<TARGET_FILE:periforge-isa-${isa}> ${deck} WORKING_DIRECTORY ${wd})
-    set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name} LABELS "regression" SKIP_RETURN_CODE 77)
+    periforge_run(${name} ${deck} 1 EXE $<TARGET_FILE:periforge-isa-${isa}>
+                  LAUNCHER ${PY} ${REG}/kernel_isa/run_if_cpu_has.py ${flag})
+    set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77)
     periforge_check(${name}_same_bits "isa_${case}_dispatch;${name}"
-      ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${wd}/${out}.e
+      ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/${name}/${out}.e
       ${CMAKE_CURRENT_BINARY_DIR}/regression/isa_${case}_dispatch/${out}.e ${REG}/kernel_isa/same_bits.comp)
   endforeach()
 endforeach()

@@ -1,7 +1,6 @@
 #!/usr/bin/env python3
 """run_if_cpu_has.py FLAG CMD...: runs CMD if /proc/cpuinfo lists FLAG, else exits 77 (ctest's skip
 code for these tests), so a test of the AVX2 build is skipped, not failed, on a CPU without AVX2."""
-import os
 import subprocess
 import sys
 
