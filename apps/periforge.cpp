@@ -5,7 +5,7 @@
 #include <cstring>
 #include <string>
 
-#include "Simulation.hpp"
+#include "app/Simulation.hpp"
 
 int main(int argc, char** argv) {
   MPI_Init(&argc, &argv);

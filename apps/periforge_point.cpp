@@ -9,9 +9,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "InputError.hpp"
-#include "Material.hpp"
-#include "MaterialPoint.hpp"
+#include "core/InputError.hpp"
+#include "core/Material.hpp"
+#include "materialpoint/MaterialPoint.hpp"
 
 namespace {
 

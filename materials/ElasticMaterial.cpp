@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "OsbKernels.hpp"
+#include "SolidParameters.hpp"
 
 namespace pf {
 

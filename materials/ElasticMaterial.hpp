@@ -3,8 +3,8 @@
 // 2024 Eqs. 3-13) in 3D, plane stress and plane strain. Declares the node field Dilatation and, in 3D,
 // Stored_Elastic_Energy = V_i W_i with Peridigm's energy density W = kappa theta^2/2 + (15 mu/(2 m))
 // sum omega e^d e^d V_j (computed in an extra bond pass only once an output asks for it).
-#include "Material.hpp"
-#include "MaterialRegistry.hpp"
+#include "core/Material.hpp"
+#include "core/MaterialEntry.hpp"
 #include "OsbConstants.hpp"
 
 namespace pf {

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "InputError.hpp"
-#include "MaterialRegistry.hpp"
+#include "core/InputError.hpp"
+#include "core/MaterialEntry.hpp"
 
 namespace pf {
 

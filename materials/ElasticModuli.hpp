@@ -1,11 +1,12 @@
 #pragma once
 // Isotropic elastic constants from any two of bulk, shear, Young's modulus and Poisson's ratio, as
 // Peridigm accepts them; plus the planar setting (Plane Stress / Plane Strain, Thickness) of a material.
-#include "Dimension.hpp"
+#include "core/Dimension.hpp"
 
 namespace pf {
 
-struct MaterialInput;
+struct ParameterValues;
+using MaterialInput = ParameterValues;
 
 struct ElasticModuli {
   double bulk = 0, shear = 0, young = 0, poisson = 0;

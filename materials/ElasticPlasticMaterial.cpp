@@ -1,7 +1,8 @@
 #include "ElasticPlasticMaterial.hpp"
 
-#include "InputError.hpp"
+#include "core/InputError.hpp"
 #include "OsbKernels.hpp"
+#include "SolidParameters.hpp"
 
 namespace pf {
 

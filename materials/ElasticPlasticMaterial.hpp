@@ -2,8 +2,8 @@
 // "Elastic Plastic": ordinary state-based J2 plasticity (Mitchell 2011; Pirzadeh et al. 2024) in 3D,
 // plane stress and plane strain. The same class carries linear isotropic/kinematic hardening and serves
 // "Elastic Plastic Hardening" (HardeningPlasticity.hpp); with K = H = 0 it is Mitchell's perfect plasticity.
-#include "Material.hpp"
-#include "MaterialRegistry.hpp"
+#include "core/Material.hpp"
+#include "core/MaterialEntry.hpp"
 #include "OsbPlasticKernels.hpp"
 
 namespace pf {

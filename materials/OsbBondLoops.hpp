@@ -15,7 +15,7 @@
 #include <cstring>
 #include <type_traits>
 
-#include "BondFamily.hpp"
+#include "core/BondFamily.hpp"
 
 // AVX-512 / AVX2 / baseline copies of a kernel, chosen once at load time from the CPU (GCC ifunc).
 // The build itself stays at x86-64-v2; results do not depend on the copy (no FMA contraction:

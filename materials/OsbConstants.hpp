@@ -9,7 +9,7 @@
 // Check: for a homogeneous in-plane strain of an interior point these give sigma_mean = E/(2(1-nu)) tr
 // (plane stress) and (kappa + mu/3) tr (plane strain) and sigma_dev = 2 mu dev, i.e. classical
 // elasticity; the unit tests verify it on a lattice.
-#include "Dimension.hpp"
+#include "core/Dimension.hpp"
 #include "ElasticModuli.hpp"
 
 namespace pf {

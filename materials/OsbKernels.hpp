@@ -2,7 +2,7 @@
 // Plain bond loops of the linear ordinary state-based solid (see OsbConstants.hpp for the equations).
 // They stream the CSR bond arrays once per pass and allocate nothing; materials compose them. The
 // shared per-node building blocks are in OsbBondLoops.hpp.
-#include "BondFamily.hpp"
+#include "core/BondFamily.hpp"
 #include "OsbConstants.hpp"
 
 namespace pf {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "Material.hpp"
+#include "core/Material.hpp"
 #include "OsbBondLoops.hpp"
 
 namespace pf {

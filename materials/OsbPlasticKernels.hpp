@@ -3,8 +3,8 @@
 // hardening (Pirzadeh et al. 2024 §3.2; Mitchell 2011 when K = H = 0) in 3D, plane stress and plane
 // strain. One pass per node over its bonds, no allocation; the derivation and the deviations from the
 // paper (2D constants, plane-strain dilatation, plane-stress flow) are in docs/materials.md.
-#include "BondFamily.hpp"
-#include "Dimension.hpp"
+#include "core/BondFamily.hpp"
+#include "core/Dimension.hpp"
 #include "OsbConstants.hpp"
 
 namespace pf {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "ClassicalJ2.hpp"
-#include "MaterialPoint.hpp"
+#include "materialpoint/MaterialPoint.hpp"
 
 namespace pftest {
 

@@ -7,11 +7,11 @@
 #include <utility>
 #include <vector>
 
-#include "BondFamily.hpp"
-#include "ElasticMaterial.hpp"
-#include "InfluenceFunction.hpp"
-#include "MaterialRegistry.hpp"
-#include "NeighborSearch.hpp"
+#include "core/BondFamily.hpp"
+#include "materials/ElasticMaterial.hpp"
+#include "core/InfluenceFunction.hpp"
+#include "core/MaterialEntry.hpp"
+#include "discretization/NeighborSearch.hpp"
 
 namespace pftest {
 

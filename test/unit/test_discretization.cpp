@@ -3,10 +3,10 @@
 
 #include <gtest/gtest.h>
 
-#include "Discretization.hpp"
-#include "InfluenceFunction.hpp"
-#include "InputSchema.hpp"
-#include "NodeSets.hpp"
+#include "discretization/Discretization.hpp"
+#include "core/InfluenceFunction.hpp"
+#include "input/InputSchema.hpp"
+#include "discretization/NodeSets.hpp"
 #include "test_input_helpers.hpp"
 
 using Teuchos::ParameterList;

@@ -17,8 +17,8 @@
 #include <vector>
 
 #include "LatticeFixture.hpp"
-#include "OsbKernels.hpp"
-#include "StateStore.hpp"
+#include "materials/OsbKernels.hpp"
+#include "core/StateStore.hpp"
 
 namespace {
 

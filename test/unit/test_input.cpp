@@ -5,11 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include "Discretization.hpp"
-#include "Expression.hpp"
-#include "Input.hpp"
-#include "InputSchema.hpp"
-#include "NodeSets.hpp"
+#include "discretization/Discretization.hpp"
+#include "core/Expression.hpp"
+#include "input/Input.hpp"
+#include "input/InputSchema.hpp"
+#include "discretization/NodeSets.hpp"
 #include "test_input_helpers.hpp"
 
 using pftest::deckFromXml;

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 
-#include "InputError.hpp"
+#include "core/InputError.hpp"
 
 namespace pftest {
 

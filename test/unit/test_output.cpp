@@ -11,8 +11,8 @@
 #include <string>
 #include <unistd.h>
 
-#include "ExodusWriter.hpp"
-#include "HistoryWriter.hpp"
+#include "output/ExodusWriter.hpp"
+#include "output/HistoryWriter.hpp"
 
 namespace {
 

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "BondFamily.hpp"
-#include "NeighborSearch.hpp"
-#include "Discretization.hpp"
-#include "PartialVolume.hpp"
+#include "core/BondFamily.hpp"
+#include "discretization/NeighborSearch.hpp"
+#include "discretization/Discretization.hpp"
+#include "discretization/PartialVolume.hpp"
 #include "test_input_helpers.hpp"
 
 namespace {

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "ElasticPlasticMaterial.hpp"
-#include "InputError.hpp"
+#include "materials/ElasticPlasticMaterial.hpp"
+#include "core/InputError.hpp"
 #include "J2PathRunner.hpp"
-#include "OsbPlasticKernels.hpp"
+#include "materials/OsbPlasticKernels.hpp"
 
 using namespace pftest;
 using pf::Dimension;

@@ -8,7 +8,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "SpaceFillingCurve.hpp"
+#include "discretization/SpaceFillingCurve.hpp"
 
 namespace pf {
 namespace {

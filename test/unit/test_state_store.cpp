@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "StateStore.hpp"
+#include "core/StateStore.hpp"
 
 TEST(StateStore, CommitAndRollbackOnlyTouchHistoryFields) {
   pf::StateStore s;

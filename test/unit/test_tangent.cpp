@@ -7,7 +7,7 @@
 #include <random>
 
 #include "LatticeFixture.hpp"
-#include "OsbKernels.hpp"
+#include "materials/OsbKernels.hpp"
 
 namespace {
 

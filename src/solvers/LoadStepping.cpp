@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "Model.hpp"
+#include "model/Model.hpp"
 #include "Solver.hpp"
 
 namespace pf {

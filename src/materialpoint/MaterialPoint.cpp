@@ -2,9 +2,9 @@
 
 #include <cmath>
 
-#include "InputError.hpp"
-#include "MaterialRegistry.hpp"
-#include "NeighborSearch.hpp"
+#include "core/InputError.hpp"
+#include "core/MaterialEntry.hpp"
+#include "discretization/NeighborSearch.hpp"
 
 namespace pf {
 

@@ -16,8 +16,8 @@
 #include <functional>
 
 #include "LoadStepping.hpp"
-#include "Material.hpp"
-#include "Model.hpp"
+#include "core/Material.hpp"
+#include "model/Model.hpp"
 
 namespace pf {
 namespace {

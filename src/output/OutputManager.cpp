@@ -7,8 +7,8 @@
 
 #include "ExodusWriter.hpp"
 #include "HistoryWriter.hpp"
-#include "InputError.hpp"
-#include "InputSchema.hpp"
+#include "core/InputError.hpp"
+#include "input/InputSchema.hpp"
 
 namespace pf {
 namespace {

@@ -10,7 +10,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "InfluenceFunction.hpp"
+#include "core/InfluenceFunction.hpp"
 
 namespace pf {
 

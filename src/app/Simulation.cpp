@@ -7,14 +7,14 @@
 #include <cstdio>
 #include <set>
 
-#include "Discretization.hpp"
-#include "Input.hpp"
-#include "InputError.hpp"
-#include "InputSchema.hpp"
-#include "Material.hpp"
-#include "ModelBuilder.hpp"
-#include "OutputManager.hpp"
-#include "SolverFactory.hpp"
+#include "discretization/Discretization.hpp"
+#include "input/Input.hpp"
+#include "core/InputError.hpp"
+#include "input/InputSchema.hpp"
+#include "core/Material.hpp"
+#include "model/ModelBuilder.hpp"
+#include "output/OutputManager.hpp"
+#include "solvers/SolverFactory.hpp"
 
 namespace pf {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "Expression.hpp"
+#include "core/Expression.hpp"
 
 namespace pf {
 

@@ -8,8 +8,8 @@
 #include <limits>
 #include <sstream>
 
-#include "InputError.hpp"
-#include "InputSchema.hpp"
+#include "core/InputError.hpp"
+#include "input/InputSchema.hpp"
 
 namespace pf {
 

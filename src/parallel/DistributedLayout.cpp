@@ -8,9 +8,9 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "NeighborSearch.hpp"
-#include "PartialVolume.hpp"
-#include "SpaceFillingCurve.hpp"
+#include "discretization/NeighborSearch.hpp"
+#include "discretization/PartialVolume.hpp"
+#include "discretization/SpaceFillingCurve.hpp"
 
 namespace pf {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "Discretization.hpp"
-#include "Expression.hpp"
+#include "discretization/Discretization.hpp"
+#include "core/Expression.hpp"
 #include "Model.hpp"
 
 namespace pf {

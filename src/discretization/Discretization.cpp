@@ -6,8 +6,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "InputError.hpp"
-#include "InputSchema.hpp"
+#include "core/InputError.hpp"
+#include "input/InputSchema.hpp"
 
 namespace pf {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "BondFamily.hpp"
-#include "Material.hpp"
-#include "StateStore.hpp"
+#include "core/BondFamily.hpp"
+#include "core/Material.hpp"
+#include "core/StateStore.hpp"
 
 namespace pf {
 

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <ctime>
 
-#include "Model.hpp"
+#include "model/Model.hpp"
 
 namespace pf {
 

@@ -6,9 +6,9 @@
 #include <set>
 #include <sstream>
 
-#include "Expression.hpp"
-#include "InfluenceFunction.hpp"
-#include "InputError.hpp"
+#include "core/Expression.hpp"
+#include "core/InfluenceFunction.hpp"
+#include "core/InputError.hpp"
 
 namespace pf {
 
@@ -621,6 +621,36 @@ double maxBlockHorizon(const PL& deck) {
   return h;
 }
 
+namespace {
+
+T kindOf(ParameterSpec::Kind k) {
+  switch (k) {
+    case ParameterSpec::Kind::Double: return T::Double;
+    case ParameterSpec::Kind::Int: return T::Int;
+    case ParameterSpec::Kind::Bool: return T::Bool;
+    case ParameterSpec::Kind::String: return T::String;
+    case ParameterSpec::Kind::Scalar: return T::Scalar;
+  }
+  return T::Scalar;
+}
+
+// The range, choices and default a component declared for one of its parameters.
+void checkDeclared(const ParameterSpec& s, ParameterValues& in) {
+  if (!in.has(s.name)) {
+    if (!s.defaultValue.empty()) in.defaults[s.name] = s.defaultValue;
+    return;
+  }
+  if (in.values.count(s.name) && s.kind != ParameterSpec::Kind::Bool) {
+    const std::string why = s.rangeError(in.values.at(s.name));
+    if (!why.empty()) fail(in.inputFile, in.path, "'" + s.name + "' " + why);
+  }
+  if (!s.choices.empty() && in.strings.count(s.name) &&
+      std::find(s.choices.begin(), s.choices.end(), in.strings.at(s.name)) == s.choices.end())
+    fail(in.inputFile, in.path, "'" + s.name + "' = '" + in.strings.at(s.name) + "' is not one of " + joinNames(s.choices));
+}
+
+}  // namespace
+
 MaterialInput materialInputFor(const PL& m, const std::string& materialName, const std::string& inputFile) {
   const std::string path = "Materials/" + materialName;
   if (!m.isParameter("Material Model")) fail(inputFile, path, "missing required parameter 'Material Model'");
@@ -633,20 +663,14 @@ MaterialInput materialInputFor(const PL& m, const std::string& materialName, con
     fail(inputFile, path, "unknown 'Material Model' = '" + model + "' (known: " + joinNames(known) + ")");
   }
   std::vector<P> ps;
-  bool hasModel = false;
-  for (const ParameterSpec& s : entry->parameters) {
-    const T t = s.kind == ParameterSpec::Kind::Double ? T::Double
-                : s.kind == ParameterSpec::Kind::Bool ? T::Bool
-                                                      : T::String;
-    ps.push_back({s.name, t, s.required});
-    hasModel = hasModel || s.name == "Material Model";
-  }
-  if (!hasModel) ps.push_back({"Material Model", T::String, true});
+  for (const ParameterSpec& s : entry->parameters) ps.push_back({s.name, kindOf(s.kind), s.required});
+  ps.push_back({"Material Model", T::String, true});
   checkList(m, inputFile, path, ps, {});
 
   MaterialInput in;
   in.name = materialName;
   in.inputFile = inputFile;
+  in.path = path;
   for (auto it = m.begin(); it != m.end(); ++it) {
     const std::string& name = m.name(it);
     const Teuchos::ParameterEntry& e = m.entry(it);
@@ -657,6 +681,7 @@ MaterialInput materialInputFor(const PL& m, const std::string& materialName, con
     else
       in.values[name] = getNumber(m, name);
   }
+  for (const ParameterSpec& s : entry->parameters) checkDeclared(s, in);
   return in;
 }
 

@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "DistributedLayout.hpp"
-#include "Material.hpp"
-#include "StateStore.hpp"
+#include "parallel/DistributedLayout.hpp"
+#include "core/Material.hpp"
+#include "core/StateStore.hpp"
 
 namespace pf {
 

@@ -5,7 +5,7 @@
 #include <RTC_FunctionRTC.hh>
 
 #include "InputError.hpp"
-#include "InputSchema.hpp"
+#include "input/InputSchema.hpp"
 
 namespace pf {
 

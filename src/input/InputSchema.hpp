@@ -7,7 +7,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "MaterialRegistry.hpp"
+#include "core/MaterialEntry.hpp"
 
 namespace pf {
 

@@ -5,11 +5,11 @@
 #include <sstream>
 #include <unordered_map>
 
-#include "InputError.hpp"
-#include "InputSchema.hpp"
-#include "MaterialRegistry.hpp"
-#include "NodeSets.hpp"
-#include "Partition.hpp"
+#include "core/InputError.hpp"
+#include "input/InputSchema.hpp"
+#include "core/MaterialEntry.hpp"
+#include "discretization/NodeSets.hpp"
+#include "parallel/Partition.hpp"
 
 namespace pf {
 namespace {

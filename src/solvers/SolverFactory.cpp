@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "AdrSolver.hpp"
-#include "InputError.hpp"
-#include "InputSchema.hpp"
+#include "core/InputError.hpp"
+#include "input/InputSchema.hpp"
 #include "NoxQuasiStaticSolver.hpp"
 #include "VerletSolver.hpp"
 

@@ -5,7 +5,7 @@
 #include <array>
 #include <vector>
 
-#include "BondFamily.hpp"
+#include "core/BondFamily.hpp"
 
 namespace pf {
 

@@ -5,7 +5,7 @@
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
-#include "InputError.hpp"
+#include "core/InputError.hpp"
 
 namespace pf {
 

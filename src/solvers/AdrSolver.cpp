@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "LoadStepping.hpp"
-#include "Model.hpp"
+#include "model/Model.hpp"
 
 namespace pf {
 

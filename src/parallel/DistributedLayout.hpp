@@ -13,8 +13,8 @@
 #include <memory>
 #include <vector>
 
-#include "BondFamily.hpp"
-#include "InfluenceFunction.hpp"
+#include "core/BondFamily.hpp"
+#include "core/InfluenceFunction.hpp"
 
 namespace pf {
 

@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "ModelBuilder.hpp"
-#include "Solver.hpp"
+#include "model/ModelBuilder.hpp"
+#include "solvers/Solver.hpp"
 
 namespace pf {
 
