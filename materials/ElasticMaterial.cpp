@@ -13,7 +13,8 @@ ElasticMaterial::ElasticMaterial(const MaterialInput& in)
 
 MaterialEntry ElasticMaterial::entry() {
   return {"Elastic", "linear ordinary state-based solid", elasticSolidParameters(),
-          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticMaterial(in)); }};
+          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticMaterial(in)); },
+          {"Dilatation", "Stored_Elastic_Energy"}};
 }
 
 std::vector<StateSpec> ElasticMaterial::stateSpecs() const {

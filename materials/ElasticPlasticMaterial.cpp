@@ -52,10 +52,20 @@ std::vector<ParameterSpec> ElasticPlasticMaterial::parameters() {
 
 MaterialEntry ElasticPlasticMaterial::entry() {
   return {"Elastic Plastic", "OSB J2 elastic-perfectly plastic solid (Mitchell 2011)", parameters(),
-          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, false)); }};
+          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, false)); },
+          outputs()};
 }
 
-std::vector<StateSpec> ElasticPlasticMaterial::stateSpecs() const {
+std::vector<std::string> ElasticPlasticMaterial::outputs() {
+  std::vector<std::string> names;
+  for (const StateSpec& s : states())
+    if (s.output) names.push_back(s.name);
+  return names;
+}
+
+std::vector<StateSpec> ElasticPlasticMaterial::stateSpecs() const { return states(); }
+
+std::vector<StateSpec> ElasticPlasticMaterial::states() {
   return {{"Deviatoric_Plastic_Extension", Location::Bond, true, false},
           {"Lambda", Location::Node, true, true},
           {"Equivalent_Plastic_Strain", Location::Node, true, true},

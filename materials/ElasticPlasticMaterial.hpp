@@ -15,6 +15,8 @@ class ElasticPlasticMaterial : public Material {
   static MaterialEntry entry();
   // Parameters of "Elastic Plastic" (elasticSolidParameters() + Yield Stress + Yield Normalization).
   static std::vector<ParameterSpec> parameters();
+  static std::vector<StateSpec> states();          // what stateSpecs() returns (the same for every input)
+  static std::vector<std::string> outputs();       // the output fields among them
 
   std::vector<StateSpec> stateSpecs() const override;
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;

@@ -10,7 +10,8 @@ MaterialEntry HardeningPlasticity::entry() {
   params.push_back({"Hardening Modulus", K::Double, false, "Peridigm's name for the isotropic modulus K"});
   return {"Elastic Plastic Hardening",
           "OSB J2 plasticity with linear isotropic and kinematic hardening (Pirzadeh et al. 2024)", params,
-          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, true)); }};
+          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, true)); },
+          ElasticPlasticMaterial::outputs()};
 }
 
 }  // namespace pf

@@ -9,6 +9,7 @@
 #include "core/Expression.hpp"
 #include "core/InfluenceFunction.hpp"
 #include "core/InputError.hpp"
+#include "core/OutputFields.hpp"
 
 namespace pf {
 
@@ -521,14 +522,15 @@ void validateOutput(const PL& o, const std::string& file, const std::set<std::st
 }  // namespace
 
 const std::vector<std::string>& knownOutputVariables() {
-  static const std::vector<std::string> names = {
-      "Displacement", "Velocity", "Force_Density", "Force", "Dilatation", "Weighted_Volume", "Element_Id",
-      "Proc_Num", "Number_Of_Neighbors", "Volume", "Horizon", "Model_Coordinates", "Coordinates", "Acceleration", "Damage",
-      // material outputs
-      "Von_Mises_Stress", "Signed_Von_Mises_Stress", "Equivalent_Plastic_Strain", "Lambda", "Back_Stress",
-      "Stored_Elastic_Energy",
-      // global (Exodus global variable)
-      "Global_Kinetic_Energy"};
+  // The core's fields, then every registered model's declared outputs (a name may appear in several).
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = coreVectorFields();
+    for (const auto* list : {&coreScalarFields(), &globalFields()}) n.insert(n.end(), list->begin(), list->end());
+    for (const MaterialEntry& e : materialRegistry())
+      for (const std::string& o : e.outputs)
+        if (std::find(n.begin(), n.end(), o) == n.end()) n.push_back(o);
+    return n;
+  }();
   return names;
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "ExodusWriter.hpp"
+#include "core/OutputFields.hpp"
 #include "HistoryWriter.hpp"
 #include "core/InputError.hpp"
 #include "input/InputSchema.hpp"
@@ -13,13 +14,10 @@
 namespace pf {
 namespace {
 
-const std::vector<std::string> kVectors = {"Displacement", "Velocity", "Force_Density", "Force",
-                                           "Model_Coordinates", "Coordinates", "Acceleration"};
-// Scalars the core itself provides; everything else must be a material output field.
-const std::vector<std::string> kCoreScalars = {"Weighted_Volume", "Element_Id", "Proc_Num", "Number_Of_Neighbors",
-                                               "Volume", "Horizon"};
-// Whole-body scalars written as Exodus global variables.
-const std::vector<std::string> kGlobals = {"Global_Kinetic_Energy"};
+// The core's fields (core/OutputFields.hpp); everything else must be a material output field.
+const std::vector<std::string>& kVectors = coreVectorFields();
+const std::vector<std::string>& kCoreScalars = coreScalarFields();
+const std::vector<std::string>& kGlobals = globalFields();  // written as Exodus global variables
 
 // Peridigm requests "Element_Id" but writes the variable as "ID"; exodiff against its gold files needs the same.
 std::string exodusName(const std::string& var) { return var == "Element_Id" ? "ID" : var; }
