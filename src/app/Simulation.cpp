@@ -5,12 +5,9 @@
 
 #include <chrono>
 #include <cstdio>
-#include <set>
 
-#include "discretization/Discretization.hpp"
-#include "input/Input.hpp"
 #include "core/InputError.hpp"
-#include "input/InputSchema.hpp"
+#include "input/Deck.hpp"
 #include "core/Material.hpp"
 #include "model/ModelBuilder.hpp"
 #include "output/OutputManager.hpp"
@@ -36,35 +33,6 @@ int fail(int rank, const std::string& kind, const std::string& what) {
   return 1;
 }
 
-// Peridigm's block group "Block Names" = "default" takes every block of the discretization that no other
-// group names: rewritten here into those block_<n> names (none: the group is dropped), so that the model
-// builder sees explicit names only. Costs one extra discretization, only for decks that use it.
-void expandDefaultBlock(Teuchos::ParameterList& input, const std::string& inputFile) {
-  Teuchos::ParameterList& blocks = input.sublist("Blocks");
-  std::string group;
-  std::set<int> named;
-  for (auto it = blocks.begin(); it != blocks.end(); ++it) {
-    if (!blocks.entry(it).isList()) continue;
-    for (const std::string& n : splitWords(getText(blocks.sublist(blocks.name(it)), "Block Names", "")))
-      if (n == "default")
-        group = blocks.name(it);
-      else
-        named.insert(std::stoi(n.substr(6)));  // block_<n>, validated
-  }
-  if (group.empty()) return;
-  const auto slash = inputFile.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "." : inputFile.substr(0, slash);
-  const PointCloud cloud = buildDiscretization(input.sublist("Discretization"), inputFile, dir, maxBlockHorizon(input));
-  std::set<int> rest(cloud.block.begin(), cloud.block.end());
-  std::string names;
-  for (int b : rest)
-    if (!named.count(b)) names += (names.empty() ? "" : " ") + std::string("block_") + std::to_string(b);
-  if (names.empty())
-    blocks.remove(group);
-  else
-    blocks.sublist(group).set("Block Names", names);
-}
-
 }  // namespace
 
 int runSimulation(const std::string& inputFile) {
@@ -73,15 +41,12 @@ int runSimulation(const std::string& inputFile) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   try {
-    Teuchos::RCP<Teuchos::ParameterList> input = readInput(inputFile);
-    validateInput(*input, inputFile);
-    expandDefaultBlock(*input, inputFile);
+    const Deck deck = readDeck(inputFile);
     // "Solver", or Peridigm's Solver1, Solver2, ... run in sequence, each continuing from the state
     // (displacement, velocity, material history) the previous one ended with.
-    const std::vector<std::string> solverLists = numberedLists(*input, "Solver");
     std::vector<std::unique_ptr<Solver>> solvers;
-    for (const std::string& n : solverLists) solvers.push_back(makeSolver(input->sublist(n), inputFile, n));
-    Problem problem = buildProblem(*input, inputFile, comm);
+    for (const SolverSpec& s : deck.solvers) solvers.push_back(makeSolver(s));
+    Problem problem = buildProblem(deck, comm);
     Model& model = *problem.model;
     const double setup = std::chrono::duration<double>(Clock::now() - start).count();
     const double bonds = model.sum(static_cast<double>(model.layout().family().numBonds()));
@@ -90,9 +55,8 @@ int runSimulation(const std::string& inputFile) {
                   model.layout().numGlobal(), bonds, comm.NumProc(), setup, solvers.front()->name().c_str());
 
     OutputFanout output;
-    for (const std::string& n : numberedLists(*input, "Output"))
-      output.managers.push_back(std::make_unique<OutputManager>(*input, n, inputFile, problem));
-    const double t0 = solverTimes(input->sublist(solverLists.front())).front();
+    for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
+    const double t0 = deck.solvers.front().times.front();
     std::vector<double> u(model.numDofs(), 0.0), v(model.numDofs(), 0.0);
     for (const NodalLoad& l : problem.initialDisplacements) {
       const std::vector<double>& x = model.coordinates();
@@ -103,10 +67,9 @@ int runSimulation(const std::string& inputFile) {
       for (int i : l.nodes) v[3 * i + l.coordinate] = (*l.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t0);
     }
     for (std::size_t k = 0; k < solvers.size(); ++k) {
-      const Teuchos::ParameterList& s = input->sublist(solverLists[k]);
       if (rank == 0 && solvers.size() > 1)
-        std::printf("periforge: %s: solver %s\n", solverLists[k].c_str(), solvers[k]->name().c_str());
-      solvers[k]->run(model, u, v, solverTimes(s), output);
+        std::printf("periforge: %s: solver %s\n", deck.solvers[k].listName.c_str(), solvers[k]->name().c_str());
+      solvers[k]->run(model, u, v, deck.solvers[k].times, output);
     }
     if (rank == 0) {
       std::string files;

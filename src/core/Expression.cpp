@@ -5,7 +5,6 @@
 #include <RTC_FunctionRTC.hh>
 
 #include "InputError.hpp"
-#include "input/InputSchema.hpp"
 
 namespace pf {
 
@@ -88,39 +87,6 @@ double Expression::operator()(double x, double y, double z, double t) const {
     throw InputError(context_ + ": cannot evaluate expression '" + oneLine(text_) + "': " +
                      oneLine(fn_->getErrors()));
   return fn_->getValueOfVar("value");
-}
-
-std::vector<BoundaryCondition> parseBoundaryConditions(const Teuchos::ParameterList& bcs,
-                                                       const std::map<std::string, std::vector<int>>& nodeSets,
-                                                       const std::string& inputFile) {
-  std::vector<BoundaryCondition> out;
-  for (auto it = bcs.begin(); it != bcs.end(); ++it) {
-    if (!bcs.entry(it).isList()) continue;
-    const std::string& name = bcs.name(it);
-    const std::string path = inputFile + ": Boundary Conditions/" + name;
-    const Teuchos::ParameterList& b = bcs.sublist(name);
-    const std::string type = getText(b, "Type", "");
-    if (type == "Node Set Region") continue;
-    BoundaryCondition bc;
-    bc.name = name;
-    if (type == "Prescribed Displacement") bc.kind = BoundaryCondition::Kind::PrescribedDisplacement;
-    else if (type == "Initial Displacement") bc.kind = BoundaryCondition::Kind::InitialDisplacement;
-    else if (type == "Initial Velocity") bc.kind = BoundaryCondition::Kind::InitialVelocity;
-    else if (type == "Body Force") bc.kind = BoundaryCondition::Kind::BodyForce;
-    else throw InputError(path + ": unknown 'Type' = '" + type + "'");
-    bc.nodeSet = getText(b, "Node Set", "");
-    if (!nodeSets.count(bc.nodeSet))
-      throw InputError(path + ": 'Node Set' = '" + bc.nodeSet + "' is not a defined node set");
-    const std::string c = getText(b, "Coordinate", "");
-    if (c == "x") bc.coordinate = 0;
-    else if (c == "y") bc.coordinate = 1;
-    else if (c == "z") bc.coordinate = 2;
-    else throw InputError(path + ": 'Coordinate' must be x, y or z (got '" + c + "')");
-    if (!b.isParameter("Value")) throw InputError(path + ": missing required parameter 'Value'");
-    bc.value = std::make_shared<Expression>(scalarAsText(b.getEntry("Value")), path + "/Value");
-    out.push_back(std::move(bc));
-  }
-  return out;
 }
 
 }  // namespace pf

@@ -2,13 +2,9 @@
 // Boundary-condition values as run-time expressions in x, y, z (reference coordinates) and t, compiled
 // by Trilinos' Pamgen RTCompiler like Peridigm: "0.0", "-0.1*t/0.00005" or a full body assigning
 // "value" (if/else if/else blocks allowed). Compile errors are InputErrors naming the context.
-#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
-#include <vector>
-
-#include <Teuchos_ParameterList.hpp>
 
 namespace PG_RuntimeCompiler {
 class Function;
@@ -36,20 +32,5 @@ class Expression {
   std::unique_ptr<PG_RuntimeCompiler::Function> fn_;
   mutable std::mutex mutex_;
 };
-
-struct BoundaryCondition {
-  enum class Kind { PrescribedDisplacement, InitialDisplacement, InitialVelocity, BodyForce };
-  std::string name;     // the sub-list name
-  Kind kind;
-  std::string nodeSet;  // key into the resolved node sets ("All" = every node)
-  int coordinate;       // 0, 1, 2
-  std::shared_ptr<Expression> value;
-};
-
-// Every sub-list of "Boundary Conditions" except "Node Set Region" ones, in input order. nodeSets is
-// the output of resolveNodeSets(); a condition naming a set not in it is an InputError.
-std::vector<BoundaryCondition> parseBoundaryConditions(const Teuchos::ParameterList& boundaryConditions,
-                                                       const std::map<std::string, std::vector<int>>& nodeSets,
-                                                       const std::string& inputFile);
 
 }  // namespace pf

@@ -7,11 +7,8 @@
 #include <sstream>
 
 #include "core/InputError.hpp"
-#include "input/InputSchema.hpp"
 
 namespace pf {
-
-using PL = Teuchos::ParameterList;
 
 namespace {
 
@@ -33,21 +30,10 @@ void pushPoint(PointCloud& c, double x, double y, double z, double v, int block)
   c.block.push_back(block);
 }
 
-PointCloud quickGrid(const PL& d, const std::string& file) {
-  const std::string path = "Discretization/TensorProduct3DMeshGenerator";
-  if (!d.isSublist("TensorProduct3DMeshGenerator")) fail(file, "Discretization", "missing sub-list 'TensorProduct3DMeshGenerator'");
-  const PL& g = d.sublist("TensorProduct3DMeshGenerator");
-  std::array<double, 3> o{}, h{};
-  std::array<int, 3> n{};
-  const char* ax[3] = {"X", "Y", "Z"};
-  for (int a = 0; a < 3; ++a) {
-    o[a] = getNumber(g, std::string(ax[a]) + " Origin");
-    const double len = getNumber(g, std::string(ax[a]) + " Length");
-    n[a] = getInteger(g, std::string("Number Points ") + ax[a], 0);
-    if (!(len > 0.0)) fail(file, path, std::string("'") + ax[a] + " Length' must be positive (got " + num(len) + ")");
-    if (n[a] < 1) fail(file, path, std::string("'Number Points ") + ax[a] + "' must be at least 1");
-    h[a] = len / n[a];
-  }
+PointCloud quickGrid(const DiscretizationSpec& d) {
+  std::array<double, 3> o = d.origin, h{};
+  std::array<int, 3> n = d.count;
+  for (int a = 0; a < 3; ++a) h[a] = d.length[a] / n[a];
   PointCloud c;
   const double vol = h[0] * h[1] * h[2];
   const std::size_t total = static_cast<std::size_t>(n[0]) * n[1] * n[2];
@@ -65,10 +51,9 @@ PointCloud quickGrid(const PL& d, const std::string& file) {
   return c;
 }
 
-PointCloud textFile(const PL& d, const std::string& file, const std::string& dir) {
+PointCloud textFile(const DiscretizationSpec& d, const std::string& file) {
   const std::string path = "Discretization/Input Mesh File";
-  const std::string name = getText(d, "Input Mesh File", "");
-  const std::string full = resolvePath(name, dir);
+  const std::string& full = d.meshFile;
   PointCloud c;
   forEachDataLine(full, file, path, "mesh", [&](const std::string& line, const std::string& where) {
     std::istringstream ss(line);
@@ -86,11 +71,6 @@ PointCloud textFile(const PL& d, const std::string& file, const std::string& dir
   return c;
 }
 
-struct Hole {
-  std::array<double, 3> centre, axis;  // axis is a unit vector
-  double radius;
-};
-
 std::vector<double> gridLine(double origin, double length, double dx, bool nodes, const std::string& file,
                              const std::string& lengthName) {
   const double ratio = length / dx;
@@ -107,8 +87,8 @@ std::vector<double> gridLine(double origin, double length, double dx, bool nodes
 }
 
 // Points on a circle/cylinder surface are kept: the relative slack stops round-off from deciding.
-bool insideAnyHole(const std::vector<Hole>& holes, double x, double y, double z) {
-  for (const Hole& h : holes) {
+bool insideAnyHole(const std::vector<HoleSpec>& holes, double x, double y, double z) {
+  for (const HoleSpec& h : holes) {
     const double d[3] = {x - h.centre[0], y - h.centre[1], z - h.centre[2]};
     const double along = d[0] * h.axis[0] + d[1] * h.axis[1] + d[2] * h.axis[2];
     const double r2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2] - along * along;
@@ -117,18 +97,14 @@ bool insideAnyHole(const std::vector<Hole>& holes, double x, double y, double z)
   return false;
 }
 
-PointCloud generator(const PL& d, const std::string& file, double defaultLayerWidth, bool box) {
-  const double dx = getNumber(d, "Spacing");
-  if (!(dx > 0.0)) fail(file, "Discretization", "'Spacing' must be positive (got " + num(dx) + ")");
-  const bool nodes = getText(d, "Grid", "Cell Centers") == "Nodes";
+PointCloud generator(const DiscretizationSpec& d, const std::string& file) {
+  const bool box = d.type == DiscretizationSpec::Type::BoxWithHoles;
+  const double dx = d.spacing;
+  const bool nodes = d.gridNodes;
   std::array<std::vector<double>, 3> line;
   const char* ax[3] = {"X", "Y", "Z"};
-  for (int a = 0; a < (box ? 3 : 2); ++a) {
-    const std::string L = std::string(ax[a]) + " Length";
-    const double len = getNumber(d, L);
-    if (!(len > 0.0)) fail(file, "Discretization", "'" + L + "' must be positive (got " + num(len) + ")");
-    line[a] = gridLine(getNumber(d, std::string(ax[a]) + " Origin", 0.0), len, dx, nodes, file, L);
-  }
+  for (int a = 0; a < (box ? 3 : 2); ++a)
+    line[a] = gridLine(d.origin[a], d.length[a], dx, nodes, file, std::string(ax[a]) + " Length");
   if (!box) line[2] = {0.0};
 
   PointCloud c;
@@ -137,45 +113,10 @@ PointCloud generator(const PL& d, const std::string& file, double defaultLayerWi
   double vol = dx * dx * dx;
   if (!box) {
     c.planar = true;
-    c.thickness = getNumber(d, "Thickness");
-    if (!(c.thickness > 0.0))
-      fail(file, "Discretization", "'Thickness' must be positive (got " + num(c.thickness) + ")");
+    c.thickness = d.thickness;
     vol = dx * dx * c.thickness;
   }
-
-  std::vector<Hole> holes;
-  if (d.isSublist("Holes")) {
-    const PL& hl = d.sublist("Holes");
-    for (auto it = hl.begin(); it != hl.end(); ++it) {
-      const std::string hpath = "Discretization/Holes/" + hl.name(it);
-      if (!hl.entry(it).isList()) fail(file, "Discretization/Holes", "'" + hl.name(it) + "' is not a sub-list");
-      const PL& h = hl.sublist(hl.name(it));
-      Hole hole;
-      hole.centre = {getNumber(h, "X Center"), getNumber(h, "Y Center"), box ? getNumber(h, "Z Center", 0.0) : 0.0};
-      hole.radius = getNumber(h, "Radius");
-      if (!(hole.radius > 0.0)) fail(file, hpath, "'Radius' must be positive (got " + num(hole.radius) + ")");
-      hole.axis = {0.0, 0.0, 1.0};
-      const std::string a = box ? getText(h, "Axis", "z") : "z";
-      if (a == "x") hole.axis = {1.0, 0.0, 0.0};
-      else if (a == "y") hole.axis = {0.0, 1.0, 0.0};
-      else if (a != "z") {
-        const std::vector<std::string> w = splitWords(a);
-        double n2 = 0.0;
-        try {
-          if (w.size() != 3) throw std::invalid_argument("count");
-          for (int k = 0; k < 3; ++k) {
-            hole.axis[k] = std::stod(w[k]);
-            n2 += hole.axis[k] * hole.axis[k];
-          }
-        } catch (const std::exception&) {
-          n2 = 0.0;
-        }
-        if (!(n2 > 0.0)) fail(file, hpath, "'Axis' must be x, y, z or three numbers, not all zero (got '" + a + "')");
-        for (double& v : hole.axis) v /= std::sqrt(n2);
-      }
-      holes.push_back(hole);
-    }
-  }
+  const std::vector<HoleSpec>& holes = d.holes;
 
   auto addBlock = [&](const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& zs,
                       std::vector<int>* members) {
@@ -189,11 +130,9 @@ PointCloud generator(const PL& d, const std::string& file, double defaultLayerWi
   };
   addBlock(line[0], line[1], line[2], nullptr);
 
-  const std::vector<std::string> faces = splitWords(getText(d, "Fictitious Layers", ""));
+  const std::vector<std::string>& faces = d.layers;
   if (!faces.empty()) {
-    const double width = getNumber(d, "Layer Width", defaultLayerWidth);
-    if (!(width > 0.0))
-      fail(file, "Discretization", "'Layer Width' must be positive (give it, or a block 'Horizon' to default to)");
+    const double width = d.layerWidth;
     // The layer covers at least its width: a partial row still counts as a row.
     const long rows = std::max(1L, static_cast<long>(std::ceil(width / dx - 1e-9)));
     for (const std::string& f : faces) {
@@ -205,7 +144,7 @@ PointCloud generator(const PL& d, const std::string& file, double defaultLayerWi
       else if (f == "Top") a = 1, low = false;
       else if (f == "Back" && box) a = 2;
       else if (f == "Front" && box) a = 2, low = false;
-      else fail(file, "Discretization", "'Fictitious Layers' names unknown face '" + f + "'");
+      else continue;  // not a face of this generator: refused by the input layer
       std::vector<double> pos;
       if (low)
         for (long k = rows; k >= 1; --k) pos.push_back(line[a].front() - k * dx);
@@ -214,7 +153,6 @@ PointCloud generator(const PL& d, const std::string& file, double defaultLayerWi
       std::array<std::vector<double>, 3> l = line;
       l[a] = pos;
       std::vector<int>& members = c.generatedNodeSets[f + " Layer"];
-      if (!members.empty()) fail(file, "Discretization", "'Fictitious Layers' names face '" + f + "' twice");
       addBlock(l[0], l[1], l[2], &members);
     }
   }
@@ -244,23 +182,17 @@ std::string resolvePath(const std::string& name, const std::string& inputDir) {
   return inputDir + "/" + name;
 }
 
-PointCloud buildDiscretization(const PL& d, const std::string& inputFile, const std::string& inputDir) {
-  return buildDiscretization(d, inputFile, inputDir, 0.0);
-}
-
-PointCloud buildDiscretization(const PL& d, const std::string& inputFile, const std::string& inputDir,
-                               double defaultLayerWidth) {
-  const std::string type = getText(d, "Type", "");
+PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& inputFile) {
+  using T = DiscretizationSpec::Type;
   PointCloud c;
-  if (type == "PdQuickGrid") c = quickGrid(d, inputFile);
-  else if (type == "Text File") c = textFile(d, inputFile, inputDir);
-  else if (type == "Rectangle With Holes") c = generator(d, inputFile, defaultLayerWidth, false);
-  else if (type == "Box With Holes") c = generator(d, inputFile, defaultLayerWidth, true);
-  else fail(inputFile, "Discretization", "unknown 'Type' = '" + type + "'");
-  c.influence = influenceFromName(getText(d, "Influence Function", "One"), inputFile + ": Discretization");
-  c.partialVolume = d.isParameter("Partial Volume") && d.get<bool>("Partial Volume");
-  if (c.partialVolume && !(c.cell[0] > 0.0))
-    fail(inputFile, "Discretization", "'Partial Volume' needs a regular grid; this discretization has no cells");
+  switch (d.type) {
+    case T::QuickGrid: c = quickGrid(d); break;
+    case T::TextFile: c = textFile(d, inputFile); break;
+    case T::RectangleWithHoles:
+    case T::BoxWithHoles: c = generator(d, inputFile); break;
+  }
+  c.influence = d.influence;
+  c.partialVolume = d.partialVolume;
   if (c.size() == 0) fail(inputFile, "Discretization", "the discretization has no points (holes cover everything)");
   return c;
 }

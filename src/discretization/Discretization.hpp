@@ -1,16 +1,15 @@
 #pragma once
-// Builds the point cloud from the "Discretization" list: Peridigm's PdQuickGrid and Text File, and
+// Builds the point cloud from a validated DiscretizationSpec: Peridigm's PdQuickGrid and Text File, and
 // Periforge's "Rectangle With Holes" (2D) and "Box With Holes" (3D) generators with optional fictitious
-// boundary layers. Every rank builds the same cloud in the same order; bad files are InputErrors.
+// boundary layers. Every rank builds the same cloud in the same order; bad mesh files are InputErrors.
 #include <array>
 #include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
-#include <Teuchos_ParameterList.hpp>
-
 #include "core/InfluenceFunction.hpp"
+#include "input/Deck.hpp"
 
 namespace pf {
 
@@ -28,12 +27,8 @@ struct PointCloud {                     // every rank builds the same cloud, det
   int size() const { return (int)volume.size(); }
 };
 
-// defaultLayerWidth: width of fictitious layers when "Layer Width" is not given (the largest block
-// horizon, see maxBlockHorizon()); the 3-argument form has none and then requires "Layer Width".
-PointCloud buildDiscretization(const Teuchos::ParameterList& discretization, const std::string& inputFile,
-                               const std::string& inputDir);
-PointCloud buildDiscretization(const Teuchos::ParameterList& discretization, const std::string& inputFile,
-                               const std::string& inputDir, double defaultLayerWidth);
+// inputFile names the deck in error messages (a mesh file's bad line, holes covering everything).
+PointCloud buildDiscretization(const DiscretizationSpec& spec, const std::string& inputFile);
 
 // A deck-relative file name made usable from the working directory.
 std::string resolvePath(const std::string& name, const std::string& inputDir);

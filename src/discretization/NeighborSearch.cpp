@@ -9,66 +9,54 @@
 
 namespace pf {
 
-void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizon,
-                   BondFamily& family, const std::array<double, 3>* gridCell) {
-  const int n = static_cast<int>(points.size() / 3);
-  family.offsets.assign(1, 0);
-  family.neighbors.clear();
-  family.refLength.clear();
-  family.fraction.clear();
-  family.numNodes = n;
-  if (numQueries == 0) return;
-  double hmax = 0.0;
-  for (int i = 0; i < numQueries; ++i) hmax = std::max(hmax, horizon[i]);
-  if (!(hmax > 0)) throw std::invalid_argument("buildFamilies: horizon must be positive");
-  // With partial volumes a centre up to half a cell diagonal beyond the horizon still has part of its
-  // cell inside: search that far, keep the bonds whose fraction is positive.
-  const double reach = gridCell ? halfCellDiagonal(*gridCell) : 0.0;
-  PartialVolumeTable table(gridCell ? *gridCell : std::array<double, 3>{});
-  hmax += reach;
+namespace {
 
-  double lo[3], hi[3];
-  for (int d = 0; d < 3; ++d) { lo[d] = std::numeric_limits<double>::max(); hi[d] = -lo[d]; }
-  for (int p = 0; p < n; ++p)
-    for (int d = 0; d < 3; ++d) { lo[d] = std::min(lo[d], points[3 * p + d]); hi[d] = std::max(hi[d], points[3 * p + d]); }
+// The points counting-sorted into a box grid of cells at least hmax wide, so a ball of radius hmax
+// around any point meets at most 27 cells.
+struct CellGrid {
+  double lo[3], hi[3], cell[3];
   long dims[3];
-  long total = 1;
-  for (int d = 0; d < 3; ++d) {
-    dims[d] = std::max(1L, static_cast<long>((hi[d] - lo[d]) / hmax) + 1);
-    total *= dims[d];
-  }
-  if (total > 4L * n + 64) {  // sparse cloud: coarsen cells so the grid stays O(N)
-    const double f = std::cbrt(static_cast<double>(total) / (4.0 * n + 64));
-    total = 1;
-    for (int d = 0; d < 3; ++d) { dims[d] = std::max(1L, static_cast<long>(dims[d] / f)); total *= dims[d]; }
-  }
-  double cell[3];
-  // A flat direction (2D clouds) gets one cell as wide as the horizon, so cell ranges stay finite.
-  for (int d = 0; d < 3; ++d) cell[d] = std::max((hi[d] - lo[d]) / dims[d], hmax);
-  auto cellOf = [&](const double* p, int d) {
-    long c = static_cast<long>((p[d] - lo[d]) / cell[d]);
-    return std::min(std::max(c, 0L), dims[d] - 1);
-  };
-  // counting sort of points into cells
-  std::vector<long> start(total + 1, 0);
-  std::vector<long> cellIndex(n);
-  for (int p = 0; p < n; ++p) {
-    const double* x = &points[3 * p];
-    cellIndex[p] = (cellOf(x, 2) * dims[1] + cellOf(x, 1)) * dims[0] + cellOf(x, 0);
-    ++start[cellIndex[p] + 1];
-  }
-  for (long c = 0; c < total; ++c) start[c + 1] += start[c];
-  std::vector<int> sorted(n);
-  {
+  std::vector<long> start;  // points of cell c: sorted[start[c] .. start[c + 1])
+  std::vector<int> sorted;
+
+  CellGrid(const std::vector<double>& points, double hmax) {
+    const int n = static_cast<int>(points.size() / 3);
+    for (int d = 0; d < 3; ++d) { lo[d] = std::numeric_limits<double>::max(); hi[d] = -lo[d]; }
+    for (int p = 0; p < n; ++p)
+      for (int d = 0; d < 3; ++d) { lo[d] = std::min(lo[d], points[3 * p + d]); hi[d] = std::max(hi[d], points[3 * p + d]); }
+    long total = 1;
+    for (int d = 0; d < 3; ++d) {
+      dims[d] = std::max(1L, static_cast<long>((hi[d] - lo[d]) / hmax) + 1);
+      total *= dims[d];
+    }
+    if (total > 4L * n + 64) {  // sparse cloud: coarsen cells so the grid stays O(N)
+      const double f = std::cbrt(static_cast<double>(total) / (4.0 * n + 64));
+      total = 1;
+      for (int d = 0; d < 3; ++d) { dims[d] = std::max(1L, static_cast<long>(dims[d] / f)); total *= dims[d]; }
+    }
+    // A flat direction (2D clouds) gets one cell as wide as the horizon, so cell ranges stay finite.
+    for (int d = 0; d < 3; ++d) cell[d] = std::max((hi[d] - lo[d]) / dims[d], hmax);
+    start.assign(total + 1, 0);
+    std::vector<long> cellIndex(n);
+    for (int p = 0; p < n; ++p) {
+      const double* x = &points[3 * p];
+      cellIndex[p] = (cellOf(x, 2) * dims[1] + cellOf(x, 1)) * dims[0] + cellOf(x, 0);
+      ++start[cellIndex[p] + 1];
+    }
+    for (long c = 0; c < total; ++c) start[c + 1] += start[c];
+    sorted.resize(n);
     std::vector<long> fill(start.begin(), start.end() - 1);
     for (int p = 0; p < n; ++p) sorted[fill[cellIndex[p]]++] = p;
   }
 
-  std::vector<int> row;
-  for (int i = 0; i < numQueries; ++i) {
+  long cellOf(const double* p, int d) const {
+    long c = static_cast<long>((p[d] - lo[d]) / cell[d]);
+    return std::min(std::max(c, 0L), dims[d] - 1);
+  }
+
+  // row = every point j != i with |x_j - x_i|^2 <= h2, in cell order (callers sort).
+  void within(const std::vector<double>& points, int i, double h, double h2, std::vector<int>& row) const {
     const double* xi = &points[3 * i];
-    const double h = horizon[i] + reach;
-    const double h2 = h * h * (1.0 + 1e-10);
     long cmin[3], cmax[3];
     for (int d = 0; d < 3; ++d) {
       const double a = std::floor((xi[d] - h - lo[d]) / cell[d]), b = std::floor((xi[d] + h - lo[d]) / cell[d]);
@@ -87,6 +75,35 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
             if (d0 * d0 + d1 * d1 + d2 * d2 <= h2) row.push_back(j);
           }
         }
+  }
+};
+
+}  // namespace
+
+void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizon,
+                   BondFamily& family, const std::array<double, 3>* gridCell) {
+  const int n = static_cast<int>(points.size() / 3);
+  family.offsets.assign(1, 0);
+  family.neighbors.clear();
+  family.refLength.clear();
+  family.fraction.clear();
+  family.numNodes = n;
+  if (numQueries == 0) return;
+  double hmax = 0.0;
+  for (int i = 0; i < numQueries; ++i) hmax = std::max(hmax, horizon[i]);
+  if (!(hmax > 0)) throw std::invalid_argument("buildFamilies: horizon must be positive");
+  // With partial volumes a centre up to half a cell diagonal beyond the horizon still has part of its
+  // cell inside: search that far, keep the bonds whose fraction is positive.
+  const double reach = gridCell ? halfCellDiagonal(*gridCell) : 0.0;
+  PartialVolumeTable table(gridCell ? *gridCell : std::array<double, 3>{});
+  hmax += reach;
+  const CellGrid grid(points, hmax);
+
+  std::vector<int> row;
+  for (int i = 0; i < numQueries; ++i) {
+    const double* xi = &points[3 * i];
+    const double h = horizon[i] + reach;
+    grid.within(points, i, h, h * h * (1.0 + 1e-10), row);
     std::sort(row.begin(), row.end());
     for (int j : row) {
       const double d0 = points[3 * j] - xi[0], d1 = points[3 * j + 1] - xi[1], d2 = points[3 * j + 2] - xi[2];

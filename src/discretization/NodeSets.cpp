@@ -9,11 +9,9 @@
 #include <sstream>
 
 #include "core/InputError.hpp"
-#include "input/InputSchema.hpp"
+#include "core/Words.hpp"
 
 namespace pf {
-
-using PL = Teuchos::ParameterList;
 
 namespace {
 
@@ -27,12 +25,6 @@ void warn(const std::string& file, const std::string& path, const std::string& m
   MPI_Initialized(&initialized);
   if (initialized) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::fprintf(stderr, "periforge: warning: %s: %s: %s\n", file.c_str(), path.c_str(), msg.c_str());
-}
-
-bool allIntegers(const std::vector<std::string>& words) {
-  for (const std::string& w : words)
-    if (w.empty() || w.find_first_not_of("0123456789+-") != std::string::npos) return false;
-  return !words.empty();
 }
 
 // Ids are 1-based global ids in the order of the cloud (Peridigm's convention).
@@ -62,14 +54,12 @@ std::vector<int> idsToIndices(const std::vector<std::string>& words, int n, cons
   return out;
 }
 
-std::vector<int> region(const PL& r, const PointCloud& c, const std::string& file, const std::string& path) {
+std::vector<int> region(const NodeSetSpec& r, const PointCloud& c) {
   std::vector<int> out;
   const int n = c.size();
-  if (r.isParameter("Face")) {
-    const std::string f = getText(r, "Face", "");
+  if (!r.face.empty()) {
+    const std::string& f = r.face;
     const int a = f.back() - 'X';
-    if (a < 0 || a > 2 || (f.compare(0, 3, "Min") != 0 && f.compare(0, 3, "Max") != 0))
-      fail(file, path, "'Face' = '" + f + "' is not one of Min X, Max X, Min Y, Max Y, Min Z, Max Z");
     const bool low = f.compare(0, 3, "Min") == 0;
     double ext = low ? std::numeric_limits<double>::max() : std::numeric_limits<double>::lowest();
     double lo = std::numeric_limits<double>::max(), hi = std::numeric_limits<double>::lowest();
@@ -80,22 +70,17 @@ std::vector<int> region(const PL& r, const PointCloud& c, const std::string& fil
       hi = std::max(hi, v);
     }
     // Default: half a grid spacing catches one row of a lattice and nothing else.
-    double tol = getNumber(r, "Tolerance", 0.0);
+    double tol = r.tolerance;
     if (tol <= 0.0) tol = c.spacing > 0.0 ? 0.5 * c.spacing : 1e-9 * std::max(1.0, hi - lo);
     for (int i = 0; i < n; ++i)
       if (std::fabs(c.x[3 * i + a] - ext) <= tol) out.push_back(i);
     return out;
   }
-  const char* names[3] = {"X", "Y", "Z"};
-  double lo[3], hi[3];
+  const std::array<double, 3>& lo = r.lo;
+  const std::array<double, 3>& hi = r.hi;
   double scale = 0.0;
   for (int i = 0; i < 3 * n; ++i) scale = std::max(scale, std::fabs(c.x[i]));
   const double slack = 1e-12 * std::max(1.0, scale);  // bounds are inclusive; round-off must not exclude a row
-  for (int a = 0; a < 3; ++a) {
-    lo[a] = getNumber(r, std::string(names[a]) + " Min", std::numeric_limits<double>::lowest());
-    hi[a] = getNumber(r, std::string(names[a]) + " Max", std::numeric_limits<double>::max());
-    if (lo[a] > hi[a]) fail(file, path, std::string("'") + names[a] + " Min' exceeds '" + names[a] + " Max'");
-  }
   for (int i = 0; i < n; ++i) {
     bool in = true;
     for (int a = 0; a < 3 && in; ++a) {
@@ -109,35 +94,27 @@ std::vector<int> region(const PL& r, const PointCloud& c, const std::string& fil
 
 }  // namespace
 
-std::map<std::string, std::vector<int>> resolveNodeSets(const PL& bcs, const PointCloud& cloud,
-                                                        const std::string& inputFile, const std::string& inputDir) {
+std::map<std::string, std::vector<int>> resolveNodeSets(const std::vector<NodeSetSpec>& nodeSets,
+                                                        const PointCloud& cloud, const std::string& inputFile) {
   std::map<std::string, std::vector<int>> sets = cloud.generatedNodeSets;
   std::vector<int>& all = sets["All"];
   all.resize(cloud.size());
   for (int i = 0; i < cloud.size(); ++i) all[i] = i;
 
-  for (auto it = bcs.begin(); it != bcs.end(); ++it) {
-    const std::string& name = bcs.name(it);
+  for (const NodeSetSpec& spec : nodeSets) {
+    const std::string& name = spec.name;
     const std::string path = "Boundary Conditions/" + name;
     std::vector<int> ids;
     int skipped = 0;  // ids outside the discretization, dropped with a warning
-    if (bcs.entry(it).isList()) {
-      const PL& r = bcs.sublist(name);
-      if (getText(r, "Type", "") != "Node Set Region") continue;
-      ids = region(r, cloud, inputFile, path);
+    if (spec.kind == NodeSetSpec::Kind::Region) {
+      ids = region(spec, cloud);
+    } else if (spec.kind == NodeSetSpec::Kind::Ids) {
+      ids = idsToIndices(splitWords(spec.text), cloud.size(), inputFile, path, "", skipped);
     } else {
-      const std::string text = scalarAsText(bcs.entry(it));
-      const std::vector<std::string> words = splitWords(text);
-      if (allIntegers(words)) {
-        ids = idsToIndices(words, cloud.size(), inputFile, path, "", skipped);
-      } else {
-        forEachDataLine(resolvePath(text, inputDir), inputFile, path, "node set",
-                        [&](const std::string& line, const std::string& where) {
-                          const std::vector<int> more =
-                              idsToIndices(splitWords(line), cloud.size(), inputFile, path, where + ": ", skipped);
-                          ids.insert(ids.end(), more.begin(), more.end());
-                        });
-      }
+      forEachDataLine(spec.text, inputFile, path, "node set", [&](const std::string& line, const std::string& where) {
+        const std::vector<int> more = idsToIndices(splitWords(line), cloud.size(), inputFile, path, where + ": ", skipped);
+        ids.insert(ids.end(), more.begin(), more.end());
+      });
     }
     if (sets.count(name)) fail(inputFile, path, "node set name clashes with a generated or built-in node set");
     std::sort(ids.begin(), ids.end());

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <set>
 #include <unordered_map>
 
 #include "core/InputError.hpp"
-#include "input/InputSchema.hpp"
 #include "core/MaterialEntry.hpp"
 #include "discretization/NodeSets.hpp"
 #include "parallel/Partition.hpp"
@@ -14,70 +13,45 @@
 namespace pf {
 namespace {
 
-std::string directoryOf(const std::string& path) {
-  const auto slash = path.find_last_of('/');
-  return slash == std::string::npos ? "." : path.substr(0, slash);
-}
-
 struct BlockSpec {
   std::string name, materialName;
   double horizon;
   std::shared_ptr<const Material> material;
 };
 
-// "block_3" -> 3; anything else is an input error.
-int blockNumber(const std::string& name, const std::string& where) {
-  if (name.rfind("block_", 0) == 0) {
-    try {
-      std::size_t used = 0;
-      const int id = std::stoi(name.substr(6), &used);
-      if (used == name.size() - 6 && id > 0) return id;
-    } catch (const std::exception&) {
+// Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
+// cloud that no other group names (none left: the group is unused).
+std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
+  std::map<int, BlockSpec> blocks;
+  std::map<std::string, std::shared_ptr<const Material>> built;
+  auto materialOf = [&](const std::string& name) {
+    if (!built.count(name)) {
+      const MaterialSpec& m = deck.material(name);
+      built[name] = m.entry->create(m.values);
     }
+    return built[name];
+  };
+  for (const BlockGroupSpec& g : deck.blocks)
+    for (int id : g.blockIds)
+      blocks[id] = BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material)};
+  for (const BlockGroupSpec& g : deck.blocks) {
+    if (!g.isDefault) continue;
+    for (int id : std::set<int>(cloud.block.begin(), cloud.block.end()))
+      if (!blocks.count(id))
+        blocks[id] = BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material)};
   }
-  throw InputError(where + ": 'Block Names' entry '" + name + "' is not of the form block_N");
+  return blocks;
 }
 
 }  // namespace
 
-Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inputFile, const Epetra_MpiComm& comm) {
+Problem buildProblem(const Deck& deck, const Epetra_MpiComm& comm) {
   Problem pb;
-  const std::string dir = directoryOf(inputFile);
-  pb.cloud = buildDiscretization(input.sublist("Discretization"), inputFile, dir, maxBlockHorizon(input));
+  const std::string& inputFile = deck.file;
+  pb.cloud = buildDiscretization(deck.discretization, inputFile);
   const PointCloud& cloud = pb.cloud;
   if (cloud.size() == 0) throw InputError(inputFile + ": Discretization produced no points");
-
-  // Blocks -> material and horizon per block id.
-  std::map<int, BlockSpec> blocks;
-  const Teuchos::ParameterList& blockList = input.sublist("Blocks");
-  const Teuchos::ParameterList& materials = input.sublist("Materials");
-  std::map<std::string, std::shared_ptr<const Material>> built;
-  for (auto it = blockList.begin(); it != blockList.end(); ++it) {
-    const std::string group = blockList.name(it);
-    const Teuchos::ParameterList& g = blockList.sublist(group);
-    const std::string where = inputFile + ": Blocks/" + group;
-    const std::string matName = getText(g, "Material", "");
-    if (!materials.isSublist(matName))
-      throw InputError(where + ": 'Material' = '" + matName + "' is not defined under Materials");
-    if (!built.count(matName)) {
-      MaterialInput mi = materialInputFor(materials.sublist(matName), matName, inputFile);
-      const MaterialEntry* entry = findMaterial(mi.strings.at("Material Model"));
-      built[matName] = entry->create(mi);
-    }
-    const double horizon = getNumber(g, "Horizon");
-    if (!(horizon > 0)) {
-      std::ostringstream os;
-      os << where << ": 'Horizon' must be positive (got " << horizon << ")";
-      throw InputError(os.str());
-    }
-    std::istringstream names(getText(g, "Block Names", ""));
-    std::string name;
-    while (names >> name) {
-      const int id = blockNumber(name, where);
-      if (blocks.count(id)) throw InputError(where + ": block '" + name + "' is assigned twice");
-      blocks[id] = BlockSpec{name, matName, horizon, built[matName]};
-    }
-  }
+  const std::map<int, BlockSpec> blocks = blockSpecs(deck, cloud);
 
   // Every point needs a block; planar materials need a planar cloud and vice versa.
   std::vector<double> horizon(cloud.size());
@@ -118,10 +92,8 @@ Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inp
   pb.model = std::make_unique<Model>(std::move(layout), std::move(x), std::move(volume), std::move(blockModels));
 
   // Node sets and boundary conditions.
-  const Teuchos::ParameterList& bcList = input.isSublist("Boundary Conditions")
-                                             ? input.sublist("Boundary Conditions") : Teuchos::ParameterList();
-  pb.nodeSets = resolveNodeSets(bcList, cloud, inputFile, dir);
-  for (BoundaryCondition& bc : parseBoundaryConditions(bcList, pb.nodeSets, inputFile)) {
+  pb.nodeSets = resolveNodeSets(deck.nodeSets, cloud, inputFile);
+  for (const ConditionSpec& bc : deck.conditions) {
     NodalLoad load;
     load.coordinate = bc.coordinate;
     load.value = bc.value;
@@ -130,14 +102,14 @@ Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inp
       if (it != localOf.end()) load.nodes.push_back(it->second);
     }
     switch (bc.kind) {
-      case BoundaryCondition::Kind::PrescribedDisplacement:
+      case ConditionSpec::Kind::PrescribedDisplacement:
         pb.model->addPrescribedDisplacement(load);
         if (std::find(pb.prescribedNodeSets.begin(), pb.prescribedNodeSets.end(), bc.nodeSet) == pb.prescribedNodeSets.end())
           pb.prescribedNodeSets.push_back(bc.nodeSet);
         break;
-      case BoundaryCondition::Kind::BodyForce: pb.model->addBodyForce(load); break;
-      case BoundaryCondition::Kind::InitialDisplacement: pb.initialDisplacements.push_back(load); break;
-      case BoundaryCondition::Kind::InitialVelocity: pb.initialVelocities.push_back(load); break;
+      case ConditionSpec::Kind::BodyForce: pb.model->addBodyForce(load); break;
+      case ConditionSpec::Kind::InitialDisplacement: pb.initialDisplacements.push_back(load); break;
+      case ConditionSpec::Kind::InitialVelocity: pb.initialVelocities.push_back(load); break;
     }
   }
   return pb;

@@ -1,8 +1,7 @@
 #pragma once
-// Builds the distributed Model from a validated input list: discretization, blocks and materials,
-// Zoltan partition, ghosting, bonds, node sets and boundary conditions. Every rank calls it.
+// Builds the distributed Model from a validated Deck: discretization, blocks and materials, Zoltan
+// partition, ghosting, bonds, node sets and boundary conditions. Every rank calls it.
 #include <Epetra_MpiComm.h>
-#include <Teuchos_ParameterList.hpp>
 
 #include <map>
 #include <memory>
@@ -10,7 +9,7 @@
 #include <vector>
 
 #include "discretization/Discretization.hpp"
-#include "core/Expression.hpp"
+#include "input/Deck.hpp"
 #include "Model.hpp"
 
 namespace pf {
@@ -23,6 +22,6 @@ struct Problem {
   std::vector<std::string> prescribedNodeSets;           // node sets carrying a Prescribed Displacement
 };
 
-Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inputFile, const Epetra_MpiComm& comm);
+Problem buildProblem(const Deck& deck, const Epetra_MpiComm& comm);
 
 }  // namespace pf

@@ -21,6 +21,16 @@ void checkName(const std::string& filename, const std::string& name) {
                              "' must have 1.." + std::to_string(kMaxName) + " characters");
 }
 
+// Every name valid and used once within its kind.
+void checkNames(const std::string& filename, const std::vector<std::string>& names, const char* kind) {
+  std::set<std::string> seen;
+  for (const auto& n : names) {
+    checkName(filename, n);
+    if (!seen.insert(n).second)
+      throw std::runtime_error("ExodusWriter(" + filename + "): duplicate " + kind + " variable '" + n + "'");
+  }
+}
+
 std::vector<char*> cstrings(std::vector<std::string>& names) {
   std::vector<char*> out;
   for (auto& n : names) out.push_back(n.data());
@@ -66,25 +76,9 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
   for (const auto& v : vectorNames_)
     for (const char* c : {"X", "Y", "Z"}) nodalNames.push_back(v + c);
   for (const auto& s : scalarNames_) nodalNames.push_back(s);
-  std::set<std::string> seen;
-  for (const auto& n : nodalNames) {
-    checkName(filename, n);
-    if (!seen.insert(n).second)
-      throw std::runtime_error("ExodusWriter(" + filename + "): duplicate nodal variable '" + n + "'");
-  }
-  seen.clear();
-  for (const auto& n : elementNames_) {
-    checkName(filename, n);
-    if (!seen.insert(n).second)
-      throw std::runtime_error("ExodusWriter(" + filename + "): duplicate element variable '" + n + "'");
-  }
-
-  seen.clear();
-  for (const auto& n : globalNames_) {
-    checkName(filename, n);
-    if (!seen.insert(n).second)
-      throw std::runtime_error("ExodusWriter(" + filename + "): duplicate global variable '" + n + "'");
-  }
+  checkNames(filename, nodalNames, "nodal");
+  checkNames(filename, elementNames_, "element");
+  checkNames(filename, globalNames_, "global");
 
   for (int b : blockIdPerNode) {
     if (b < 1) throw std::runtime_error("ExodusWriter(" + filename + "): block ids must be >= 1");
@@ -110,38 +104,8 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
     check(ex_put_init(exoid_, "Periforge", 3, nn, nn, static_cast<int64_t>(blockIds_.size()), 0, 0),
           "ex_put_init");
 
-    std::vector<double> x(numNodes_), y(numNodes_), z(numNodes_);
-    for (std::size_t n = 0; n < numNodes_; ++n) {
-      x[n] = coords[3 * n];
-      y[n] = coords[3 * n + 1];
-      z[n] = coords[3 * n + 2];
-    }
-    check(ex_put_coord(exoid_, x.data(), y.data(), z.data()), "ex_put_coord");
-    std::vector<std::string> coordNames{"X", "Y", "Z"};
-    auto coordPtrs = cstrings(coordNames);
-    check(ex_put_coord_names(exoid_, coordPtrs.data()), "ex_put_coord_names");
-
-    // Nodes keep their global order (local index = global id - 1); elements are renumbered
-    // block by block by Exodus, so the element number map carries the global id back.
-    std::vector<int> nodeMap(numNodes_), elemMap;
-    for (std::size_t n = 0; n < numNodes_; ++n) nodeMap[n] = static_cast<int>(n) + 1;
-    for (std::size_t b = 0; b < blockIds_.size(); ++b) {
-      const auto& nodes = blockNodes_[b];
-      check(ex_put_block(exoid_, EX_ELEM_BLOCK, blockIds_[b], "SPHERE", static_cast<int64_t>(nodes.size()), 1, 0,
-                         0, 0),
-            "ex_put_block");
-      std::vector<int> conn(nodes.size());
-      for (std::size_t i = 0; i < nodes.size(); ++i) {
-        conn[i] = static_cast<int>(nodes[i]) + 1;
-        elemMap.push_back(conn[i]);
-      }
-      check(ex_put_conn(exoid_, EX_ELEM_BLOCK, blockIds_[b], conn.data(), nullptr, nullptr), "ex_put_conn");
-      const std::string name = "block_" + std::to_string(blockIds_[b]);
-      check(ex_put_name(exoid_, EX_ELEM_BLOCK, blockIds_[b], name.c_str()), "ex_put_name");
-    }
-    check(ex_put_id_map(exoid_, EX_NODE_MAP, nodeMap.data()), "ex_put_id_map(nodes)");
-    check(ex_put_id_map(exoid_, EX_ELEM_MAP, elemMap.data()), "ex_put_id_map(elements)");
-
+    putCoordinates(coords);
+    putBlocks();
     if (!nodalNames.empty()) putVariableNames(EX_NODAL, nodalNames, "nodal");
     if (!elementNames_.empty()) {
       putVariableNames(EX_ELEM_BLOCK, elementNames_, "element");
@@ -157,6 +121,41 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
     exoid_ = -1;
     throw;
   }
+}
+
+void ExodusWriter::putCoordinates(const std::vector<double>& coords) const {
+  std::vector<double> x(numNodes_), y(numNodes_), z(numNodes_);
+  for (std::size_t n = 0; n < numNodes_; ++n) {
+    x[n] = coords[3 * n];
+    y[n] = coords[3 * n + 1];
+    z[n] = coords[3 * n + 2];
+  }
+  check(ex_put_coord(exoid_, x.data(), y.data(), z.data()), "ex_put_coord");
+  std::vector<std::string> coordNames{"X", "Y", "Z"};
+  auto coordPtrs = cstrings(coordNames);
+  check(ex_put_coord_names(exoid_, coordPtrs.data()), "ex_put_coord_names");
+}
+
+// Nodes keep their global order (local index = global id - 1); elements are renumbered block by block
+// by Exodus, so the element number map carries the global id back.
+void ExodusWriter::putBlocks() const {
+  std::vector<int> nodeMap(numNodes_), elemMap;
+  for (std::size_t n = 0; n < numNodes_; ++n) nodeMap[n] = static_cast<int>(n) + 1;
+  for (std::size_t b = 0; b < blockIds_.size(); ++b) {
+    const auto& nodes = blockNodes_[b];
+    check(ex_put_block(exoid_, EX_ELEM_BLOCK, blockIds_[b], "SPHERE", static_cast<int64_t>(nodes.size()), 1, 0, 0, 0),
+          "ex_put_block");
+    std::vector<int> conn(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      conn[i] = static_cast<int>(nodes[i]) + 1;
+      elemMap.push_back(conn[i]);
+    }
+    check(ex_put_conn(exoid_, EX_ELEM_BLOCK, blockIds_[b], conn.data(), nullptr, nullptr), "ex_put_conn");
+    const std::string name = "block_" + std::to_string(blockIds_[b]);
+    check(ex_put_name(exoid_, EX_ELEM_BLOCK, blockIds_[b], name.c_str()), "ex_put_name");
+  }
+  check(ex_put_id_map(exoid_, EX_NODE_MAP, nodeMap.data()), "ex_put_id_map(nodes)");
+  check(ex_put_id_map(exoid_, EX_ELEM_MAP, elemMap.data()), "ex_put_id_map(elements)");
 }
 
 ExodusWriter::~ExodusWriter() {

@@ -45,6 +45,8 @@ class ExodusWriter {
  private:
   void check(int status, const char* what) const;
   // Declares the variables of one kind (entityType: an ex_entity_type, e.g. EX_NODAL) and their names.
+  void putCoordinates(const std::vector<double>& coords) const;
+  void putBlocks() const;
   void putVariableNames(int entityType, std::vector<std::string> names, const std::string& what) const;
 
   std::string filename_;

@@ -11,8 +11,6 @@
 // call n (1-based) is written if Initial Output Step <= n <= Final Output Step + 1 and (n - 1) is a multiple
 // of Output Frequency. The CSV's step column is n - 1. Global variables (Global_Kinetic_Energy) go to the
 // Exodus globals; a list that asks for globals only gets Peridigm's one-dummy-node file.
-#include <Teuchos_ParameterList.hpp>
-
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,11 +25,8 @@ class HistoryWriter;
 
 class OutputManager : public StepObserver {
  public:
-  OutputManager(const Teuchos::ParameterList& input, const std::string& inputFile, Problem& problem)
-      : OutputManager(input, "Output", inputFile, problem) {}
-  // listName: the top-level output list this manager writes ("Output", "Output1", ...).
-  OutputManager(const Teuchos::ParameterList& input, const std::string& listName, const std::string& inputFile,
-                Problem& problem);
+  // out: one of the deck's output lists ("Output", "Output1", ...); deck names the file in messages.
+  OutputManager(const OutputSpec& out, const Deck& deck, Problem& problem);
   ~OutputManager() override;
   void onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
               const std::vector<double>& f) override;
@@ -49,6 +44,10 @@ class OutputManager : public StepObserver {
     std::string label;       // column label: the set's name or its "Reaction Names" entry
     std::vector<int> nodes;  // owned-local
   };
+  void requireComputed(const std::string& var, const std::string& where) const;
+  Probe locateProbe(const ProbeSpec& p, const std::string& listName) const;
+  void addReactions(const OutputSpec& out);
+  void openFiles();
   double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
                    const std::vector<double>& f) const;
   std::vector<double> ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
@@ -56,6 +55,7 @@ class OutputManager : public StepObserver {
 
   Problem& pb_;
   Model& model_;
+  std::string inputFile_;
   int frequency_ = 1;
   long first_ = 1, last_ = 0;  // Initial / Final Output Step (last_ = 0: no limit)
   long count_ = 0;             // steps reported so far, over all solvers
@@ -67,7 +67,7 @@ class OutputManager : public StepObserver {
   std::unique_ptr<ExodusWriter> writer_;
   std::unique_ptr<HistoryWriter> history_;
   std::vector<double> bodyForce_;
-  std::shared_ptr<Expression> applied_;  // "Applied Displacement" condition's value, or null
+  std::shared_ptr<const Expression> applied_;  // "Applied Displacement" condition's value, or null
 };
 
 }  // namespace pf

@@ -8,6 +8,31 @@
 
 namespace pf {
 
+SolverEntry AdrSolver::entry() {
+  using S = ParameterSpec;
+  SolverEntry e;
+  e.name = "Adaptive Dynamic Relaxation";
+  e.doc = "quasi-static load steps by adaptive dynamic relaxation (Kilic & Madenci 2010)";
+  e.loadSteps = true;
+  e.parameters = {
+      S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1),
+      S::real("Relative Tolerance", "residual / load scale (reaction + body force) that ends a step").byDefault("1e-6").positive(),
+      S::real("Absolute Tolerance", "residual force-density norm that also ends a step (default: none)").positive(),
+      S::integer("Maximum Iterations", "per load step; then the run fails").byDefault("100000").atLeast(1),
+      S::real("Safety Factor", "multiplies the fictitious density").byDefault("1").positive(),
+      S::flag("Verbose", "print the residual history of every step").byDefault("false")};
+  e.create = [](const ParameterValues& p, const ParamTree&) {
+    AdrOptions o;
+    o.relativeTolerance = p.get("Relative Tolerance");
+    o.absoluteTolerance = p.get("Absolute Tolerance", 0.0);
+    o.maxIterations = static_cast<int>(p.get("Maximum Iterations"));
+    o.safetyFactor = p.get("Safety Factor");
+    o.verbose = p.flag("Verbose");
+    return std::unique_ptr<Solver>(new AdrSolver(o));
+  };
+  return e;
+}
+
 AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, double t,
                                        const std::vector<double>& uStart) const {
   const int n = model.numDofs();

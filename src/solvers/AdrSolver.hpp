@@ -5,6 +5,7 @@
 // (force, free dofs) is below Relative Tolerance x the load scale (reaction + body force) or below the
 // Absolute Tolerance; after Maximum Iterations it fails with SolverFailure.
 #include "Solver.hpp"
+#include "core/SolverEntry.hpp"
 
 namespace pf {
 
@@ -19,6 +20,7 @@ struct AdrOptions {
 class AdrSolver : public Solver {
  public:
   explicit AdrSolver(AdrOptions o) : opt_(o) {}
+  static SolverEntry entry();
   std::string name() const override { return "Adaptive Dynamic Relaxation"; }
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;

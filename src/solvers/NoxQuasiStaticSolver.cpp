@@ -285,6 +285,21 @@ Teuchos::RCP<Epetra_Operator> buildMl(const Teuchos::RCP<Epetra_CrsMatrix>& A, c
   return ml;
 }
 
+// The deck's NOX options as NOX reads them.
+Teuchos::ParameterList teuchosOf(const ParamTree& tree) {
+  Teuchos::ParameterList l;
+  for (const ParamTree::Entry& e : tree.entries) {
+    switch (e.kind) {
+      case ParamTree::Entry::Kind::Double: l.set(e.name, e.number); break;
+      case ParamTree::Entry::Kind::Int: l.set(e.name, e.integer); break;
+      case ParamTree::Entry::Kind::Bool: l.set(e.name, e.flag); break;
+      case ParamTree::Entry::Kind::String: l.set(e.name, e.text); break;
+      case ParamTree::Entry::Kind::List: l.set(e.name, teuchosOf(*e.list)); break;
+    }
+  }
+  return l;
+}
+
 // Teuchos stores a const char* value as std::string, so string literals work here too.
 template <class T>
 void setDefault(Teuchos::ParameterList& l, const std::string& name, T v) {
@@ -311,7 +326,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
   for (int k = 0; k < n; ++k) x0[k] = u[k];
   NOX::Epetra::Vector noxX0(x0, NOX::DeepCopy);
 
-  auto params = Teuchos::rcp(new Teuchos::ParameterList(opt_.nox));
+  auto params = Teuchos::rcp(new Teuchos::ParameterList(teuchosOf(opt_.nox)));
   setDefault(*params, "Nonlinear Solver", "Line Search Based");
   Teuchos::ParameterList& print = params->sublist("Printing");
   // Same on every rank: NOX computes the norms it prints collectively and prints on Output Processor.

@@ -12,6 +12,7 @@
 
 #include "AdrSolver.hpp"
 #include "Solver.hpp"
+#include "core/SolverEntry.hpp"
 
 namespace pf {
 
@@ -26,13 +27,15 @@ struct NoxOptions {
   // delta/dx = 5 a radius of 3 dx halves the wall time (20 % more Krylov iterations); at delta/dx = 3
   // it keeps every bond, and cutting further there cost more iterations than it saved.
   double precBondRadius = 3.0;
-  Teuchos::ParameterList nox;        // "Direction", "Line Search", "Printing", ... passed to NOX
+  ParamTree nox;                     // "Direction", "Line Search", "Printing", ... passed to NOX
   AdrOptions fallback;
 };
 
 class NoxQuasiStaticSolver : public Solver {
  public:
   explicit NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)) {}
+  static SolverEntry entry();           // "NOXQuasiStatic"
+  static SolverEntry peridigmEntry();   // Peridigm's "QuasiStatic" (Newton), served by the same engine
   std::string name() const override { return "NOXQuasiStatic (Newton-Krylov)"; }
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;

@@ -9,6 +9,22 @@
 
 namespace pf {
 
+SolverEntry VerletSolver::entry() {
+  using S = ParameterSpec;
+  SolverEntry e;
+  e.name = "Verlet";
+  e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
+  e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate").positive(),
+                  S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ)").byDefault("0.8").positive()};
+  e.create = [](const ParameterValues& p, const ParamTree&) {
+    VerletOptions o;
+    o.fixedDt = p.get("Fixed dt", 0.0);
+    o.safetyFactor = p.get("Safety Factor");
+    return std::unique_ptr<Solver>(new VerletSolver(o));
+  };
+  return e;
+}
+
 namespace {
 
 // CPU seconds of the calling thread: unlike wall time, not inflated when the core is shared.

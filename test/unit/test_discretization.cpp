@@ -6,6 +6,7 @@
 #include "discretization/Discretization.hpp"
 #include "core/InfluenceFunction.hpp"
 #include "input/InputSchema.hpp"
+#include "input/ListReader.hpp"
 #include "discretization/NodeSets.hpp"
 #include "test_input_helpers.hpp"
 
@@ -57,7 +58,7 @@ ParameterList plate(const std::string& grid, double layerWidth) {
 }  // namespace
 
 TEST(Discretization, QuickGridOrderAndVolumes) {
-  const pf::PointCloud c = pf::buildDiscretization(quickGrid(3, 2, 2), kFile, ".");
+  const pf::PointCloud c = pftest::cloudOf(quickGrid(3, 2, 2), kFile, ".");
   ASSERT_EQ(c.size(), 12);
   // x fastest, then y, then z; points at cell centres.
   EXPECT_DOUBLE_EQ(c.x[0], -1.0);
@@ -89,7 +90,7 @@ TEST(Discretization, UserDefinedInfluenceFunctionAsPeridigm) {
 TEST(Discretization, InfluenceFunctionsMatchPeridigm) {
   ParameterList d = quickGrid(1, 1, 1);
   d.set("Influence Function", std::string("Parabolic Decay"));
-  const pf::PointCloud c = pf::buildDiscretization(d, kFile, ".");
+  const pf::PointCloud c = pftest::cloudOf(d, kFile, ".");
   EXPECT_EQ(c.influence, pf::Influence::ParabolicDecay);
   EXPECT_DOUBLE_EQ(pf::influenceValue(pf::Influence::ParabolicDecay, 0.4, 1.0), 1.0);
   EXPECT_DOUBLE_EQ(pf::influenceValue(pf::Influence::ParabolicDecay, 0.5, 1.0), 1.0);
@@ -97,7 +98,7 @@ TEST(Discretization, InfluenceFunctionsMatchPeridigm) {
   EXPECT_DOUBLE_EQ(pf::influenceValue(pf::Influence::ParabolicDecay, 1.0, 1.0), 0.0);
   EXPECT_DOUBLE_EQ(pf::influenceValue(pf::Influence::Gaussian, 1.0, 2.0), std::exp(-0.25));
   d.set("Influence Function", std::string("Cubic"));
-  EXPECT_INPUT_ERROR(pf::buildDiscretization(d, kFile, "."), kFile, "Influence Function");
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, "."), kFile, "Influence Function");
 }
 
 TEST(Discretization, TextFileParsesAndRejectsBadLines) {
@@ -110,7 +111,7 @@ TEST(Discretization, TextFileParsesAndRejectsBadLines) {
   d.set("Type", std::string("Text File"));
   d.set("Input Mesh File", std::string("pf_mesh.txt"));
   const std::string dir = ::testing::TempDir();
-  const pf::PointCloud c = pf::buildDiscretization(d, kFile, dir);
+  const pf::PointCloud c = pftest::cloudOf(d, kFile, dir);
   ASSERT_EQ(c.size(), 2);
   EXPECT_EQ(c.block[1], 2);
   EXPECT_DOUBLE_EQ(c.volume[1], 0.25);
@@ -118,11 +119,11 @@ TEST(Discretization, TextFileParsesAndRejectsBadLines) {
 
   pftest::writeTemp("pf_badmesh.txt", "0 0 0 1 0.5\n0 0 1 0.5\n");
   d.set("Input Mesh File", std::string("pf_badmesh.txt"));
-  EXPECT_INPUT_ERROR(pf::buildDiscretization(d, kFile, dir), kFile, "pf_badmesh.txt:2:");
-  EXPECT_INPUT_ERROR(pf::buildDiscretization(d, kFile, dir), kFile, "Input Mesh File");
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, dir), kFile, "pf_badmesh.txt:2:");
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, dir), kFile, "Input Mesh File");
 
   d.set("Input Mesh File", std::string("no_such_mesh.txt"));
-  EXPECT_INPUT_ERROR(pf::buildDiscretization(d, kFile, dir), kFile, "no_such_mesh.txt");
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, dir), kFile, "no_such_mesh.txt");
 }
 
 // The paper reports 154 336 nodes for the plate with two fictitious layers. This is reproduced by a
@@ -130,7 +131,7 @@ TEST(Discretization, TextFileParsesAndRejectsBadLines) {
 // (|c - centre| < r keeps the 12 lattice points lying exactly on the circle), and layers of 6 rows
 // (1.5 mm = delta + dx) on two faces: 160801 - 11277 + 2 * 6 * 401 = 154336.
 TEST(Discretization, PaperPlateCount) {
-  const pf::PointCloud nodes = pf::buildDiscretization(plate("Nodes", 1.5), kFile, ".");
+  const pf::PointCloud nodes = pftest::cloudOf(plate("Nodes", 1.5), kFile, ".");
   EXPECT_EQ(nodes.size(), 154336);
   EXPECT_EQ(nodes.generatedNodeSets.at("Bottom Layer").size(), 6u * 401u);
   EXPECT_EQ(nodes.generatedNodeSets.at("Top Layer").size(), 6u * 401u);
@@ -147,7 +148,7 @@ TEST(Discretization, PaperPlateCount) {
   EXPECT_DOUBLE_EQ(nodes.x[3 * top0 + 1], 50.25);
 
   // Default cell-centred grid, layer width = the horizon 1.25 mm (5 rows): 148696 + 2 * 5 * 400.
-  const pf::PointCloud cells = pf::buildDiscretization(plate("Cell Centers", 0.0), kFile, ".", 1.25);
+  const pf::PointCloud cells = pftest::cloudOf(plate("Cell Centers", 0.0), kFile, ".", 1.25);
   EXPECT_EQ(cells.size(), 152696);
   EXPECT_EQ(cells.generatedNodeSets.at("Bottom Layer").size(), 5u * 400u);
 }
@@ -167,7 +168,7 @@ TEST(Discretization, BoxWithCylindricalHoleAndLayers) {
   h.set("Z Center", 0.0);
   h.set("Radius", 1.0);
   h.set("Axis", std::string("0 0 1"));
-  const pf::PointCloud c = pf::buildDiscretization(d, kFile, ".");
+  const pf::PointCloud c = pftest::cloudOf(d, kFile, ".");
   // 4x4x2 cells, centres at 0.5..3.5; the four central columns (distance 0.707) are removed, also
   // from the Front layer since the cylinder is unbounded along its axis.
   EXPECT_EQ(c.size(), (32 - 8) + 16 + (32 - 8));
@@ -177,13 +178,13 @@ TEST(Discretization, BoxWithCylindricalHoleAndLayers) {
   EXPECT_FALSE(c.planar);
   // Layers need a width: none given and no default.
   d.remove("Layer Width");
-  EXPECT_INPUT_ERROR(pf::buildDiscretization(d, kFile, "."), kFile, "Layer Width");
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, "."), kFile, "Layer Width");
   d.set("X Length", 4.1);
-  EXPECT_INPUT_ERROR(pf::buildDiscretization(d, kFile, ".", 1.0), kFile, "'X Length'");
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, ".", 1.0), kFile, "'X Length'");
 }
 
 TEST(NodeSets, FromIdsFilesAndRegions) {
-  const pf::PointCloud c = pf::buildDiscretization(quickGrid(3, 2, 2), kFile, ".");
+  const pf::PointCloud c = pftest::cloudOf(quickGrid(3, 2, 2), kFile, ".");
   const std::string dir = ::testing::TempDir();
   pftest::writeTemp("pf_ns.txt", "# ids\n3\n1 2\n2\n");
   ParameterList bc;
@@ -196,7 +197,7 @@ TEST(NodeSets, FromIdsFilesAndRegions) {
   ParameterList& face = bc.sublist("Top Y");
   face.set("Type", std::string("Node Set Region"));
   face.set("Face", std::string("Max Y"));
-  const auto s = pf::resolveNodeSets(bc, c, kFile, dir);
+  const auto s = pftest::nodeSetsOf(bc, c, kFile, dir);
   EXPECT_EQ(s.at("Listed"), (std::vector<int>{0, 3, 6, 9}));
   EXPECT_EQ(s.at("From File"), (std::vector<int>{0, 1, 2}));
   EXPECT_EQ(s.at("Single"), (std::vector<int>{4}));
@@ -206,7 +207,7 @@ TEST(NodeSets, FromIdsFilesAndRegions) {
 }
 
 TEST(NodeSets, Errors) {
-  const pf::PointCloud c = pf::buildDiscretization(quickGrid(3, 2, 2), kFile, ".");
+  const pf::PointCloud c = pftest::cloudOf(quickGrid(3, 2, 2), kFile, ".");
   const std::string dir = ::testing::TempDir();
   {
     // Ids the discretization does not have are dropped with a warning, as Peridigm does (its decks list
@@ -214,7 +215,7 @@ TEST(NodeSets, Errors) {
     ParameterList bc;
     bc.set("Far Away", std::string("0 1 13"));
     bc.set("Only Zero", std::string("0"));
-    const auto s = pf::resolveNodeSets(bc, c, kFile, dir);
+    const auto s = pftest::nodeSetsOf(bc, c, kFile, dir);
     EXPECT_EQ(s.at("Far Away"), (std::vector<int>{0}));
     EXPECT_TRUE(s.at("Only Zero").empty());
   }
@@ -223,17 +224,17 @@ TEST(NodeSets, Errors) {
     ParameterList& r = bc.sublist("Nothing");
     r.set("Type", std::string("Node Set Region"));
     r.set("X Min", 100.0);
-    EXPECT_INPUT_ERROR(pf::resolveNodeSets(bc, c, kFile, dir), kFile, "node set 'Nothing' is empty");
+    EXPECT_INPUT_ERROR(pftest::nodeSetsOf(bc, c, kFile, dir), kFile, "node set 'Nothing' is empty");
   }
   {
     ParameterList bc;
     bc.set("Missing File", std::string("no_such_nodeset.txt"));
-    EXPECT_INPUT_ERROR(pf::resolveNodeSets(bc, c, kFile, dir), kFile, "no_such_nodeset.txt");
+    EXPECT_INPUT_ERROR(pftest::nodeSetsOf(bc, c, kFile, dir), kFile, "no_such_nodeset.txt");
   }
   {
     pftest::writeTemp("pf_empty_ns.txt", "# nothing\n");
     ParameterList bc;
     bc.set("Empty File", std::string("pf_empty_ns.txt"));
-    EXPECT_INPUT_ERROR(pf::resolveNodeSets(bc, c, kFile, dir), kFile, "Empty File");
+    EXPECT_INPUT_ERROR(pftest::nodeSetsOf(bc, c, kFile, dir), kFile, "Empty File");
   }
 }

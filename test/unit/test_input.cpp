@@ -9,6 +9,7 @@
 #include "core/Expression.hpp"
 #include "input/Input.hpp"
 #include "input/InputSchema.hpp"
+#include "input/ListReader.hpp"
 #include "discretization/NodeSets.hpp"
 #include "test_input_helpers.hpp"
 
@@ -103,58 +104,58 @@ Teuchos::RCP<Teuchos::ParameterList> base() { return deckFromXml(baseDeck()); }
 
 }  // namespace
 
-TEST(InputSchema, BaseDeckIsValid) { EXPECT_NO_THROW(pf::validateInput(*base(), kFile)); }
+TEST(InputSchema, BaseDeckIsValid) { EXPECT_NO_THROW(pf::parseDeck(*base(), kFile)); }
 
 TEST(InputSchema, UnknownParameterNamesItsPath) {
   auto p = base();
   p->sublist("Blocks").sublist("My Block").set("Horizn", 1.0);
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "Blocks/My Block: unknown parameter 'Horizn'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "Blocks/My Block: unknown parameter 'Horizn'");
 }
 
 TEST(InputSchema, UnknownSubListNamesItsPath) {
   auto p = base();
   p->sublist("Solver").sublist("QuasiStatic").sublist("Extra");
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "Solver/QuasiStatic: unknown sub-list 'Extra'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "Solver/QuasiStatic: unknown sub-list 'Extra'");
   auto q = base();
   q->sublist("Damage Models");
-  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "unknown sub-list 'Damage Models'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "unknown sub-list 'Damage Models'");
 }
 
 TEST(InputSchema, MissingMaterial) {
   auto p = base();
   p->sublist("Blocks").sublist("My Block").set("Material", std::string("Aluminium"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Material' = 'Aluminium'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "'Material' = 'Aluminium'");
 }
 
 TEST(InputSchema, NonPositiveHorizon) {
   auto p = base();
   p->sublist("Blocks").sublist("My Block").set("Horizon", -1.0);
-  const std::string msg = pftest::inputErrorOf([&] { pf::validateInput(*p, "plate.xml"); });
+  const std::string msg = pftest::inputErrorOf([&] { pf::parseDeck(*p, "plate.xml"); });
   EXPECT_EQ(msg, "plate.xml: Blocks/My Block: 'Horizon' must be positive (got -1)");
 }
 
 TEST(InputSchema, WrongTypeAndMissingRequired) {
   auto p = base();
   p->sublist("Blocks").sublist("My Block").set("Horizon", std::string("big"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Horizon' must be a double");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "'Horizon' must be a double");
   auto q = base();
   q->sublist("Solver").remove("Final Time");
-  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "missing required parameter 'Final Time'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "missing required parameter 'Final Time'");
   auto r = base();
   r->remove("Blocks");
-  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "missing required sub-list 'Blocks'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "missing required sub-list 'Blocks'");
 }
 
 TEST(InputSchema, UnknownMaterialModelAndParameter) {
   auto p = base();
   p->sublist("Materials").sublist("Steel").set("Material Model", std::string("Rubber"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "unknown 'Material Model' = 'Rubber'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "unknown 'Material Model' = 'Rubber'");
   auto q = base();
   q->sublist("Materials").sublist("Steel").set("Yield Strss", 1.0);
-  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "Materials/Steel: unknown parameter 'Yield Strss'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "Materials/Steel: unknown parameter 'Yield Strss'");
   auto r = base();
   r->sublist("Materials").sublist("Steel").remove("Density");
-  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "missing required parameter 'Density'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "missing required parameter 'Density'");
 }
 
 TEST(InputSchema, MaterialInputConvertsValues) {
@@ -171,57 +172,57 @@ TEST(InputSchema, MaterialInputConvertsValues) {
 TEST(InputSchema, UnknownInfluenceFunction) {
   auto p = base();
   p->sublist("Discretization").set("Influence Function", std::string("Cubic"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Influence Function' = 'Cubic'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "'Influence Function' = 'Cubic'");
 }
 
 TEST(InputSchema, SolverChoiceIsExactlyOne) {
   auto p = base();
   p->sublist("Solver").sublist("Verlet").set("Fixed dt", 1e-8);
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "exactly one solver sub-list");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "exactly one solver sub-list");
   auto q = base();
   q->sublist("Solver").remove("QuasiStatic");
-  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "exactly one solver sub-list");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "exactly one solver sub-list");
   // NOXQuasiStatic: its scalar options are checked, NOX's own sub-lists pass through, others are errors.
   auto r = base();
   r->sublist("Solver").remove("QuasiStatic");
   r->sublist("Solver").sublist("NOXQuasiStatic").set("Number of Load Steps", 2);
   r->sublist("Solver").sublist("NOXQuasiStatic").sublist("Direction").set("Method", std::string("Newton"));
-  EXPECT_NO_THROW(pf::validateInput(*r, kFile));
+  EXPECT_NO_THROW(pf::parseDeck(*r, kFile));
   r->sublist("Solver").sublist("NOXQuasiStatic").sublist("Anything").set("Goes", 1);
-  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "unknown sub-list 'Anything'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "unknown sub-list 'Anything'");
 }
 
 TEST(InputSchema, BoundaryConditionErrors) {
   auto p = base();
   p->sublist("Boundary Conditions").sublist("Fix Left").set("Node Set", std::string("Nowhere"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "'Node Set' = 'Nowhere'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "'Node Set' = 'Nowhere'");
   auto q = base();
   q->sublist("Boundary Conditions").sublist("Fix Left").set("Coordinate", std::string("w"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "'Coordinate'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "'Coordinate'");
   auto r = base();
   r->sublist("Boundary Conditions").sublist("Fix Left").set("Value", std::string("2*q"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "Boundary Conditions/Fix Left/Value");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "Boundary Conditions/Fix Left/Value");
   auto s = base();
   s->sublist("Boundary Conditions").sublist("Fix Left").set("Type", std::string("Prescribed Temperature"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*s, kFile), kFile, "'Type' = 'Prescribed Temperature'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*s, kFile), kFile, "'Type' = 'Prescribed Temperature'");
 }
 
 TEST(InputSchema, OutputErrors) {
   auto p = base();
   p->sublist("Output").sublist("Output Variables").set("Stress", true);
-  EXPECT_INPUT_ERROR(pf::validateInput(*p, kFile), kFile, "Output/Output Variables: unknown parameter 'Stress'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "Output/Output Variables: unknown parameter 'Stress'");
   auto q = base();
   q->sublist("Output").sublist("Probes").sublist("Centre").set("Variables", std::string("Temperature"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*q, kFile), kFile, "'Temperature'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "'Temperature'");
   auto r = base();
   r->sublist("Output").set("Reactions", std::string("Min X Node Set, Nowhere"));
-  EXPECT_INPUT_ERROR(pf::validateInput(*r, kFile), kFile, "'Reactions' names undefined node set 'Nowhere'");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "'Reactions' names undefined node set 'Nowhere'");
 }
 
 TEST(Input, ReadsXmlAndYamlAndNamesBadFiles) {
   const std::string xml = pftest::writeTemp("pf_deck.xml", baseDeck());
   auto p = pf::readInput(xml);
-  EXPECT_NO_THROW(pf::validateInput(*p, xml));
+  EXPECT_NO_THROW(pf::parseDeck(*p, xml));
   EXPECT_EQ(pf::inputDirectory("/a/b/deck.xml"), "/a/b");
   EXPECT_EQ(pf::inputDirectory("deck.xml"), ".");
 
@@ -295,19 +296,19 @@ TEST(Expression, CyclicPiecewiseLinearHistory) {
 
 TEST(BoundaryConditions, ParsedWithNodeSets) {
   auto p = base();
-  const pf::PointCloud c = pf::buildDiscretization(p->sublist("Discretization"), kFile, ".");
-  const auto sets = pf::resolveNodeSets(p->sublist("Boundary Conditions"), c, kFile, ".");
+  const pf::PointCloud c = pftest::cloudOf(p->sublist("Discretization"), kFile, ".");
+  const auto sets = pftest::nodeSetsOf(p->sublist("Boundary Conditions"), c, kFile, ".");
   EXPECT_EQ(sets.at("Min X Node Set"), (std::vector<int>{0, 3, 6, 9}));
   EXPECT_EQ(sets.at("Right Face"), (std::vector<int>{2, 5, 8, 11}));
   EXPECT_EQ(sets.at("All").size(), 12u);
-  const auto bcs = pf::parseBoundaryConditions(p->sublist("Boundary Conditions"), sets, kFile);
+  const auto bcs = pf::parseDeck(*p, kFile).conditions;
   ASSERT_EQ(bcs.size(), 3u);
   EXPECT_EQ(bcs[0].name, "Fix Left");
-  EXPECT_EQ(bcs[0].kind, pf::BoundaryCondition::Kind::PrescribedDisplacement);
+  EXPECT_EQ(bcs[0].kind, pf::ConditionSpec::Kind::PrescribedDisplacement);
   EXPECT_EQ(bcs[0].coordinate, 0);
   EXPECT_EQ(bcs[1].nodeSet, "Right Face");
   EXPECT_NEAR((*bcs[1].value)(0, 0, 0, 2.0), 0.02, 1e-15);
-  EXPECT_EQ(bcs[2].kind, pf::BoundaryCondition::Kind::BodyForce);
+  EXPECT_EQ(bcs[2].kind, pf::ConditionSpec::Kind::BodyForce);
   EXPECT_EQ(bcs[2].coordinate, 2);
   EXPECT_NEAR((*bcs[2].value)(0, 0, 0, 0), -9.81, 1e-15);
 }
@@ -325,12 +326,15 @@ TEST(PeridigmDecks, ValidateAndBuildUnmodified) {
     const std::string deck = kPeridigm + name + "/" + name + ".xml";
     if (!exists(deck)) GTEST_SKIP() << deck << " not present";
     auto p = pf::readInput(deck);
-    ASSERT_NO_THROW(pf::validateInput(*p, deck)) << deck;
+    ASSERT_NO_THROW(pf::parseDeck(*p, deck)) << deck;
     const std::string dir = pf::inputDirectory(deck);
-    const pf::PointCloud c = pf::buildDiscretization(p->sublist("Discretization"), deck, dir, pf::maxBlockHorizon(*p));
+    const pf::Deck d = pf::parseDeck(*p, deck, dir);
+    const pf::PointCloud c = pf::buildDiscretization(d.discretization, deck);
     EXPECT_EQ(c.size(), 12);
-    const auto sets = pf::resolveNodeSets(p->sublist("Boundary Conditions"), c, deck, dir);
-    const auto bcs = pf::parseBoundaryConditions(p->sublist("Boundary Conditions"), sets, deck);
+    const auto sets = pf::resolveNodeSets(d.nodeSets, c, deck);
+    EXPECT_EQ(sets.size(), d.nodeSets.size() + 1);  // the deck's and "All"
+    for (const pf::NodeSetSpec& n : d.nodeSets) EXPECT_FALSE(sets.at(n.name).empty()) << n.name;
+    const auto& bcs = d.conditions;
     EXPECT_EQ(bcs.size(), 4u);
     EXPECT_NEAR((*bcs[1].value)(0, 0, 0, 0.00005), -0.1, 1e-15);
   }
@@ -347,7 +351,7 @@ TEST(RegressionDecks, Validate) {
     if (entry.path().extension() != ".xml") continue;
     const std::string deck = entry.path().string();
     auto p = pf::readInput(deck);
-    EXPECT_NO_THROW(pf::validateInput(*p, deck)) << pftest::inputErrorOf([&] { pf::validateInput(*p, deck); });
+    EXPECT_NO_THROW(pf::parseDeck(*p, deck)) << pftest::inputErrorOf([&] { pf::parseDeck(*p, deck); });
     ++count;
   }
   if (count == 0) GTEST_SKIP() << "no regression decks";

@@ -7,11 +7,31 @@
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 
 #include "core/InputError.hpp"
+#include "discretization/Discretization.hpp"
+#include "discretization/NodeSets.hpp"
+#include "input/DeckParser.hpp"
+#include "input/Sections.hpp"
 
 namespace pftest {
 
 inline Teuchos::RCP<Teuchos::ParameterList> deckFromXml(const std::string& xml) {
   return Teuchos::getParametersFromXmlString(xml);
+}
+
+// The cloud of a Discretization list (defaultLayerWidth: the largest block horizon a deck would give).
+inline pf::PointCloud cloudOf(const Teuchos::ParameterList& d, const std::string& file, const std::string& dir,
+                              double defaultLayerWidth = 0.0) {
+  pf::DiscretizationSpec spec = pf::parseDiscretization(d, file, dir);
+  pf::applyDefaultLayerWidth(spec, defaultLayerWidth, file);
+  return pf::buildDiscretization(spec, file);
+}
+
+// The node sets of a Boundary Conditions list resolved on a cloud.
+inline std::map<std::string, std::vector<int>> nodeSetsOf(const Teuchos::ParameterList& bcs, const pf::PointCloud& c,
+                                                          const std::string& file, const std::string& dir) {
+  std::set<std::string> generated;
+  for (const auto& kv : c.generatedNodeSets) generated.insert(kv.first);
+  return pf::resolveNodeSets(pf::parseNodeSets(bcs, generated, file, dir), c, file);
 }
 
 inline std::string writeTemp(const std::string& name, const std::string& content) {

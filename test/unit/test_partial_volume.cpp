@@ -103,7 +103,7 @@ TEST(PartialVolume, NeedsARegularGrid) {
   d.set("Type", std::string("Text File"));
   d.set("Input Mesh File", std::string("pf_pv_mesh.txt"));
   d.set("Partial Volume", true);
-  EXPECT_INPUT_ERROR(pf::buildDiscretization(d, "deck.xml", ::testing::TempDir()), "deck.xml", "'Partial Volume'");
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, "deck.xml", ::testing::TempDir()), "deck.xml", "'Partial Volume'");
   Teuchos::ParameterList g;
   g.set("Type", std::string("Rectangle With Holes"));
   g.set("Spacing", 0.001);
@@ -111,7 +111,7 @@ TEST(PartialVolume, NeedsARegularGrid) {
   g.set("Y Length", 0.005);
   g.set("Thickness", 0.001);
   g.set("Partial Volume", true);
-  const pf::PointCloud c = pf::buildDiscretization(g, "deck.xml", ".");
+  const pf::PointCloud c = pftest::cloudOf(g, "deck.xml", ".");
   EXPECT_TRUE(c.partialVolume);
   EXPECT_EQ(c.cell[0], 0.001);
   EXPECT_EQ(c.cell[1], 0.001);

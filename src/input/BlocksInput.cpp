@@ -1,0 +1,116 @@
+// The "Materials" and "Blocks" lists -> MaterialSpecs (checked against the model registry) and BlockGroupSpecs.
+#include <set>
+
+#include "Sections.hpp"
+
+namespace pf {
+
+namespace {
+
+using S = ParameterSpec;
+
+// "block_<positive integer>" -> the integer, else 0.
+int blockNumber(const std::string& n) {
+  if (n.size() <= 6 || n.compare(0, 6, "block_") != 0 || n.find_first_not_of("0123456789", 6) != std::string::npos)
+    return 0;
+  try {
+    const long id = std::stol(n.substr(6));
+    return id >= 1 && id < 1000000000L ? static_cast<int>(id) : 0;
+  } catch (const std::exception&) {
+    return 0;
+  }
+}
+
+}  // namespace
+
+std::vector<ParameterSpec> blockSpecs() {
+  return {S::text("Block Names",
+                  "space-separated `block_N` (N ≥ 1); a block belongs to one group only. Peridigm's `default` "
+                  "(alone, in one group at most): every block of the discretization that no other group names")
+              .need(),
+          S::text("Material", "a sub-list name of `Materials`").need(), S::real("Horizon", "horizon δ").need().positive()};
+}
+
+MaterialSpec parseMaterial(const PL& m, const std::string& name, const std::string& file) {
+  const std::string path = "Materials/" + name;
+  if (!m.isParameter("Material Model")) fail(file, path, "missing required parameter 'Material Model'");
+  if (!m.getEntry("Material Model").isType<std::string>()) fail(file, path, "'Material Model' must be a string");
+  const std::string model = m.get<std::string>("Material Model");
+  MaterialSpec spec;
+  spec.name = name;
+  spec.entry = findMaterial(model);
+  if (!spec.entry) {
+    std::vector<std::string> known;
+    for (const MaterialEntry& e : materialRegistry()) known.push_back(e.model);
+    fail(file, path, "unknown 'Material Model' = '" + model + "' (known: " + joinNames(known) + ")");
+  }
+  std::vector<ParameterSpec> specs = spec.entry->parameters;
+  specs.push_back(S::text("Material Model", "model name").need());
+  spec.values = readList(m, specs, {}, file, path);
+  spec.values.name = name;
+  return spec;
+}
+
+std::vector<MaterialSpec> parseMaterials(const PL& deck, const std::string& file) {
+  const PL& mats = requireSublist(deck, "Materials", file, "top level");
+  std::vector<MaterialSpec> out;
+  for (auto it = mats.begin(); it != mats.end(); ++it) {
+    if (!mats.entry(it).isList())
+      fail(file, "Materials", "unknown parameter '" + mats.name(it) + "' (each material is a sub-list)");
+    out.push_back(parseMaterial(mats.sublist(mats.name(it)), mats.name(it), file));
+  }
+  if (out.empty()) fail(file, "Materials", "no material defined");
+  return out;
+}
+
+std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<MaterialSpec>& materials,
+                                        const std::string& file) {
+  const PL& blocks = requireSublist(deck, "Blocks", file, "top level");
+  std::vector<std::string> matNames;
+  for (const MaterialSpec& m : materials) matNames.push_back(m.name);
+  std::vector<BlockGroupSpec> out;
+  std::set<std::string> seen;
+  for (auto it = blocks.begin(); it != blocks.end(); ++it) {
+    const std::string bpath = "Blocks/" + blocks.name(it);
+    if (!blocks.entry(it).isList())
+      fail(file, "Blocks", "unknown parameter '" + blocks.name(it) + "' (each block group is a sub-list)");
+    const ParameterValues b = readList(blocks.sublist(blocks.name(it)), blockSpecs(), {}, file, bpath);
+    BlockGroupSpec g;
+    g.name = blocks.name(it);
+    g.material = b.text("Material");
+    g.horizon = b.get("Horizon");
+    if (std::find(matNames.begin(), matNames.end(), g.material) == matNames.end())
+      fail(file, bpath, "'Material' = '" + g.material + "' is not defined in Materials (defined: " +
+                            joinNames(matNames) + ")");
+    const std::vector<std::string> names = splitWords(b.text("Block Names"));
+    if (names.empty()) fail(file, bpath, "'Block Names' is empty");
+    for (const std::string& n : names) {
+      if (n == "default") {
+        if (names.size() != 1) fail(file, bpath, "'Block Names' = 'default' stands alone (no other names with it)");
+        if (!seen.insert(n).second) fail(file, bpath, "'Block Names': 'default' is given by two block groups");
+        g.isDefault = true;
+        continue;
+      }
+      const int id = blockNumber(n);
+      if (id == 0) fail(file, bpath, "'Block Names' entry '" + n + "' is not of the form block_<positive integer>");
+      if (!seen.insert("block_" + std::to_string(id)).second)
+        fail(file, bpath, "'Block Names': '" + n + "' is assigned to two block groups");
+      g.blockIds.push_back(id);
+    }
+    out.push_back(g);
+  }
+  if (out.empty()) fail(file, "Blocks", "no block defined");
+  return out;
+}
+
+}  // namespace pf
+
+#include "InputSchema.hpp"
+
+namespace pf {
+
+MaterialInput materialInputFor(const PL& m, const std::string& name, const std::string& file) {
+  return parseMaterial(m, name, file).values;
+}
+
+}  // namespace pf

@@ -1,0 +1,137 @@
+// The "Boundary Conditions" list -> NodeSetSpecs (Peridigm's id strings and files, Node Set Regions) and
+// ConditionSpecs with their value expressions compiled.
+#include <algorithm>
+#include <limits>
+
+#include "Sections.hpp"
+
+namespace pf {
+
+namespace {
+
+using S = ParameterSpec;
+
+bool isNodeSetEntry(const PL& bcs, const std::string& name) {
+  const Teuchos::ParameterEntry& e = bcs.getEntry(name);
+  if (!e.isList()) return true;
+  const PL& s = bcs.sublist(name);
+  return s.isParameter("Type") && s.getEntry("Type").isType<std::string>() &&
+         s.get<std::string>("Type") == "Node Set Region";
+}
+
+bool allIntegers(const std::vector<std::string>& words) {
+  for (const std::string& w : words)
+    if (w.empty() || w.find_first_not_of("0123456789+-") != std::string::npos) return false;
+  return !words.empty();
+}
+
+NodeSetSpec regionSpec(const PL& r, const std::string& name, const std::string& file) {
+  const std::string path = "Boundary Conditions/" + name;
+  const ParameterValues v = readList(r, regionSpecs(), {}, file, path);
+  const char* bounds[6] = {"X Min", "Y Min", "Z Min", "X Max", "Y Max", "Z Max"};
+  bool anyBound = false;
+  for (const char* b : bounds) anyBound = anyBound || v.has(b);
+  if (v.has("Face") == anyBound)
+    fail(file, path, "give either 'Face' or box bounds ('X Min' ... 'Z Max'), not both or neither");
+  if (v.has("Tolerance") && !v.has("Face")) fail(file, path, "'Tolerance' applies to 'Face' regions only");
+  NodeSetSpec s;
+  s.name = name;
+  s.kind = NodeSetSpec::Kind::Region;
+  if (v.has("Face")) {
+    s.face = v.text("Face");
+    s.tolerance = v.get("Tolerance", 0.0);
+    return s;
+  }
+  const char* axes[3] = {"X", "Y", "Z"};
+  for (int a = 0; a < 3; ++a) {
+    s.lo[a] = v.get(std::string(axes[a]) + " Min", std::numeric_limits<double>::lowest());
+    s.hi[a] = v.get(std::string(axes[a]) + " Max", std::numeric_limits<double>::max());
+    if (s.lo[a] > s.hi[a]) fail(file, path, std::string("'") + axes[a] + " Min' exceeds '" + axes[a] + " Max'");
+  }
+  return s;
+}
+
+}  // namespace
+
+std::vector<ParameterSpec> regionSpecs() {
+  std::vector<ParameterSpec> s = {
+      S::text("Type", "`Node Set Region`").need(),
+      S::text("Face", "`Min X`, `Max X`, `Min Y`, `Max Y`, `Min Z`, `Max Z`: the points within `Tolerance` of that "
+                      "face of the cloud").oneOf({"Min X", "Max X", "Min Y", "Max Y", "Min Z", "Max Z"}),
+      S::real("Tolerance", "for `Face`; default: half the grid spacing").positive()};
+  for (const char* a : {"X", "Y", "Z"})
+    for (const char* m : {" Min", " Max"}) s.push_back(S::real(std::string(a) + m, "inclusive box bound (instead of `Face`)"));
+  return s;
+}
+
+std::vector<ParameterSpec> conditionSpecs() {
+  return {S::text("Type", "`Prescribed Displacement`, `Initial Displacement`, `Initial Velocity`, `Body Force`")
+              .need().oneOf({"Prescribed Displacement", "Initial Displacement", "Initial Velocity", "Body Force"}),
+          S::text("Node Set", "a node-set name (`All`: every node)").need(),
+          S::text("Coordinate", "`x`, `y` or `z`").need().oneOf({"x", "y", "z"}),
+          S::scalar("Value", "expression in `x`, `y`, `z` (reference coordinates) and `t`").need()};
+}
+
+std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string>& generated, const std::string& file,
+                                       const std::string& dir) {
+  const std::string path = "Boundary Conditions";
+  std::set<std::string> names = generated;
+  names.insert("All");
+  std::vector<NodeSetSpec> out;
+  for (auto it = bcs.begin(); it != bcs.end(); ++it) {
+    const std::string& name = bcs.name(it);
+    if (!isNodeSetEntry(bcs, name)) continue;
+    const Teuchos::ParameterEntry& e = bcs.entry(it);
+    if (!names.insert(name).second)
+      fail(file, path, "node set '" + name + "' clashes with a " +
+                           (name == "All" ? std::string("built-in") : std::string("generated")) + " node set");
+    if (e.isList()) {
+      out.push_back(regionSpec(bcs.sublist(name), name, file));
+      continue;
+    }
+    if (!(e.isType<std::string>() || e.isType<int>() || e.isType<long long>() || e.isType<double>()))
+      fail(file, path, "node set '" + name + "' must be a string of node ids or a file name (got " +
+                           e.getAny().typeName() + ")");
+    NodeSetSpec s;
+    s.name = name;
+    s.text = scalarAsText(e);
+    if (allIntegers(splitWords(s.text))) {
+      s.kind = NodeSetSpec::Kind::Ids;
+    } else {
+      s.kind = NodeSetSpec::Kind::File;
+      if (!s.text.empty() && s.text[0] != '/' && !dir.empty() && dir != ".") s.text = dir + "/" + s.text;
+    }
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::string>& nodeSets,
+                                           const std::string& file) {
+  std::vector<ConditionSpec> out;
+  for (auto it = bcs.begin(); it != bcs.end(); ++it) {
+    if (!bcs.entry(it).isList() || isNodeSetEntry(bcs, bcs.name(it))) continue;
+    const std::string bpath = "Boundary Conditions/" + bcs.name(it);
+    const PL& b = bcs.sublist(bcs.name(it));
+    if (!b.isParameter("Type")) fail(file, bpath, "missing required parameter 'Type'");
+    if (!b.getEntry("Type").isType<std::string>()) fail(file, bpath, "'Type' must be a string");
+    const ParameterValues v = readList(b, conditionSpecs(), {}, file, bpath);
+    ConditionSpec c;
+    c.name = bcs.name(it);
+    const std::string type = v.text("Type");
+    using K = ConditionSpec::Kind;
+    c.kind = type == "Prescribed Displacement" ? K::PrescribedDisplacement
+             : type == "Initial Displacement"  ? K::InitialDisplacement
+             : type == "Initial Velocity"      ? K::InitialVelocity
+                                               : K::BodyForce;
+    c.nodeSet = v.text("Node Set");
+    if (!nodeSets.count(c.nodeSet))
+      fail(file, bpath, "'Node Set' = '" + c.nodeSet + "' is not defined in Boundary Conditions");
+    c.coordinate = v.text("Coordinate")[0] - 'x';
+    c.value = std::make_shared<const Expression>(v.text("Value"), file + ": " + bpath + "/Value");
+    out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace pf

@@ -1,0 +1,126 @@
+#pragma once
+// A validated input deck as plain structs: what every component reads instead of the raw parameter list.
+// readDeck() parses and validates the file once (src/input is the only place that sees Teuchos); every
+// value here has passed its type, range and cross-reference checks and file names are resolved.
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/Expression.hpp"
+#include "core/InfluenceFunction.hpp"
+#include "core/MaterialEntry.hpp"
+#include "core/ParamTree.hpp"
+#include "core/Parameters.hpp"
+
+namespace pf {
+
+struct HoleSpec {
+  std::array<double, 3> centre{};
+  std::array<double, 3> axis{0.0, 0.0, 1.0};  // unit vector
+  double radius = 0.0;
+};
+
+struct DiscretizationSpec {
+  enum class Type { QuickGrid, TextFile, RectangleWithHoles, BoxWithHoles };
+  Type type = Type::QuickGrid;
+  Influence influence = Influence::One;
+  bool partialVolume = false;
+  // PdQuickGrid: box corner, sizes and cells per direction.
+  std::array<double, 3> origin{};
+  std::array<double, 3> length{};
+  std::array<int, 3> count{};
+  // Text File: the mesh file, resolved against the deck's directory.
+  std::string meshFile;
+  // Rectangle / Box With Holes (origin and length above; z unused for the rectangle).
+  double spacing = 0.0;
+  bool gridNodes = false;           // "Grid" = "Nodes" (else cell centres)
+  double thickness = 0.0;           // rectangle only
+  std::vector<HoleSpec> holes;
+  std::vector<std::string> layers;  // faces with a fictitious layer: "Left", "Right", ...
+  double layerWidth = 0.0;          // "Layer Width", or the largest block horizon
+};
+
+struct MaterialSpec {
+  std::string name;                   // the sub-list name in Materials
+  const MaterialEntry* entry = nullptr;
+  MaterialInput values;               // checked against entry->parameters
+};
+
+struct BlockGroupSpec {
+  std::string name;                   // the sub-list name in Blocks
+  std::vector<int> blockIds;          // block_<n> -> n; empty for Peridigm's "default"
+  bool isDefault = false;             // "Block Names" = "default": every block no other group names
+  std::string material;               // a MaterialSpec name
+  double horizon = 0.0;
+};
+
+struct NodeSetSpec {
+  enum class Kind { Ids, File, Region };
+  std::string name;
+  Kind kind = Kind::Ids;
+  std::string text;                   // Ids: the ids as written; File: the resolved file name
+  // Region: a face of the cloud ("Min X" ...) with a tolerance (0: default), or inclusive box bounds.
+  std::string face;
+  double tolerance = 0.0;
+  std::array<double, 3> lo{}, hi{};
+};
+
+struct ConditionSpec {
+  enum class Kind { PrescribedDisplacement, InitialDisplacement, InitialVelocity, BodyForce };
+  std::string name;                   // the sub-list name
+  Kind kind = Kind::PrescribedDisplacement;
+  std::string nodeSet;                // a NodeSetSpec, a generated set or "All"
+  int coordinate = 0;                 // 0, 1, 2
+  std::shared_ptr<const Expression> value;
+};
+
+struct SolverSpec {
+  std::string listName;               // "Solver", "Solver1", ...
+  std::string type;                   // the solver sub-list: "Verlet", "NOXQuasiStatic", ...
+  ParameterValues options;            // the solver sub-list, checked against the solver's specs
+  ParamTree passThrough;              // sub-lists handed over unread (NOX's own options)
+  std::vector<double> times;          // start time, then the end of every load step (Verlet: start, end)
+  bool verbose = false;
+};
+
+struct ProbeSpec {
+  std::string name;
+  std::array<double, 3> at{};
+  std::vector<std::string> variables;
+};
+
+struct OutputSpec {
+  std::string listName;               // "Output", "Output1", ...
+  std::string filename;               // base name: <filename>.e and <filename>.csv
+  bool exodus = true;
+  int frequency = 1;
+  long firstStep = 1, lastStep = 0;   // Initial / Final Output Step (0: no limit)
+  std::vector<std::string> variables; // "Output Variables" set to true, in deck order
+  std::vector<ProbeSpec> probes;
+  bool reactionsGiven = false;        // "Reactions" given (else: every prescribed node set)
+  std::vector<std::string> reactions, reactionNames;
+  std::shared_ptr<const Expression> appliedDisplacement;  // "Applied Displacement" condition's value
+};
+
+struct Deck {
+  std::string file;                   // as given on the command line (error messages name it)
+  std::string directory;              // relative file names in the deck resolve against it
+  bool verbose = false;
+  DiscretizationSpec discretization;
+  std::vector<MaterialSpec> materials;
+  std::vector<BlockGroupSpec> blocks;
+  std::vector<NodeSetSpec> nodeSets;  // user-defined, in deck order
+  std::vector<ConditionSpec> conditions;
+  std::vector<SolverSpec> solvers;    // run in sequence
+  std::vector<OutputSpec> outputs;
+
+  const MaterialSpec& material(const std::string& name) const;
+  double maxHorizon() const;
+  bool hasVerlet() const;
+};
+
+// Reads (XML, or YAML for .yaml/.yml) and validates a deck; InputError naming the file and parameter.
+Deck readDeck(const std::string& path);
+
+}  // namespace pf

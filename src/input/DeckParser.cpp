@@ -1,0 +1,105 @@
+// The top level of a deck: which lists it may hold, then each section in dependency order (blocks give
+// the default layer width, node sets the names conditions and reactions refer to).
+#include "DeckParser.hpp"
+
+#include <map>
+#include <set>
+
+#include "Input.hpp"
+#include "Sections.hpp"
+
+namespace pf {
+
+namespace {
+
+// Top-level sub-lists a deck may hold; Peridigm's numbered Solver<n>/Output<n> lists with n = 1, 2, ...
+std::vector<std::string> topLists(const PL& p, const std::string& file) {
+  std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions"};
+  for (const std::string stem : {"Solver", "Output"}) {
+    const std::vector<std::string> lists = numberedLists(p, stem);
+    tops.insert(tops.end(), lists.begin(), lists.end());
+    if (!p.isSublist(stem)) tops.push_back(stem);  // so that a missing one is reported as such
+  }
+  for (auto it = p.begin(); it != p.end(); ++it) {
+    const std::string& n = p.name(it);
+    for (const std::string stem : {"Solver", "Output"})
+      if (p.entry(it).isList() && n.size() > stem.size() && n.compare(0, stem.size(), stem) == 0 &&
+          n.find_first_not_of("0123456789", stem.size()) == std::string::npos &&
+          (n[stem.size()] == '0' || std::find(tops.begin(), tops.end(), n) == tops.end()))
+        fail(file, "top level", "'" + n + "': a numbered " + stem + " list is " + stem +
+                                    "<n> with n = 1, 2, ... (no leading zero)");
+  }
+  return tops;
+}
+
+std::vector<SolverSpec> solvers(const PL& p, const std::string& file) {
+  const std::vector<std::string> lists = numberedLists(p, "Solver");
+  if (p.isSublist("Solver") && lists.size() > 1)
+    fail(file, "top level", "give either one 'Solver' list or numbered ones ('" + lists[1] + "', ...), not both");
+  if (lists.empty()) fail(file, "top level", "missing required sub-list 'Solver' (or 'Solver1', ...)");
+  std::vector<SolverSpec> out;
+  for (const std::string& n : lists) out.push_back(parseSolver(p.sublist(n), file, n));
+  return out;
+}
+
+std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<std::string>& nodeSets) {
+  std::vector<OutputSpec> out;
+  std::map<std::string, std::string> files;  // Output Filename -> list
+  for (const std::string& n : numberedLists(p, "Output")) {
+    out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasVerlet()));
+    const std::string& f = out.back().filename;
+    if (files.count(f)) fail(deck.file, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");
+    files[f] = n;
+  }
+  return out;
+}
+
+}  // namespace
+
+Deck parseDeck(const PL& p, const std::string& file, const std::string& directory) {
+  Deck deck;
+  deck.file = file;
+  deck.directory = directory;
+  const ParameterValues top = readList(p, {ParameterSpec::flag("Verbose")}, topLists(p, file), file, "top level");
+  deck.verbose = top.get("Verbose", 0.0) != 0.0;
+  deck.solvers = solvers(p, file);
+  deck.discretization = parseDiscretization(requireSublist(p, "Discretization", file, "top level"), file, directory);
+  deck.materials = parseMaterials(p, file);
+  deck.blocks = parseBlocks(p, deck.materials, file);
+  applyDefaultLayerWidth(deck.discretization, deck.maxHorizon(), file);
+  const std::vector<std::string> generated = generatedNodeSetNames(deck.discretization);
+  std::set<std::string> nodeSets(generated.begin(), generated.end());
+  nodeSets.insert("All");
+  if (p.isSublist("Boundary Conditions")) {
+    const PL& bcs = p.sublist("Boundary Conditions");
+    deck.nodeSets = parseNodeSets(bcs, nodeSets, file, directory);
+    for (const NodeSetSpec& s : deck.nodeSets) nodeSets.insert(s.name);
+    deck.conditions = parseConditions(bcs, nodeSets, file);
+  }
+  deck.outputs = outputs(p, deck, nodeSets);
+  return deck;
+}
+
+Deck readDeck(const std::string& path) {
+  return parseDeck(*readInput(path), path, inputDirectory(path));
+}
+
+const MaterialSpec& Deck::material(const std::string& name) const {
+  for (const MaterialSpec& m : materials)
+    if (m.name == name) return m;
+  throw std::logic_error("no material '" + name + "' in the deck");  // parseBlocks checked every name
+}
+
+double Deck::maxHorizon() const {
+  double h = 0.0;
+  for (const BlockGroupSpec& b : blocks) h = std::max(h, b.horizon);
+  return h;
+}
+
+bool Deck::hasVerlet() const {
+  for (const SolverSpec& s : solvers)
+    if (s.type == "Verlet") return true;
+  return false;
+}
+
+}  // namespace pf

@@ -1,0 +1,179 @@
+// The "Discretization" list -> DiscretizationSpec.
+#include <cmath>
+
+#include "Sections.hpp"
+
+namespace pf {
+
+namespace {
+
+using S = ParameterSpec;
+const std::vector<std::string> kTypes = {"PdQuickGrid", "Text File", "Rectangle With Holes", "Box With Holes"};
+
+// "x", "y", "z" or three numbers, not all zero -> a unit vector.
+std::array<double, 3> holeAxis(const std::string& a, const std::string& file, const std::string& path) {
+  if (a == "x") return {1.0, 0.0, 0.0};
+  if (a == "y") return {0.0, 1.0, 0.0};
+  if (a == "z") return {0.0, 0.0, 1.0};
+  const std::vector<std::string> w = splitWords(a);
+  std::array<double, 3> axis{};
+  double n2 = 0.0;
+  bool ok = w.size() == 3;
+  for (int k = 0; ok && k < 3; ++k) {
+    try {
+      std::size_t used = 0;
+      axis[k] = std::stod(w[k], &used);
+      ok = used == w[k].size();
+      n2 += axis[k] * axis[k];
+    } catch (const std::exception&) {
+      ok = false;
+    }
+  }
+  if (!ok || !(n2 > 0.0)) fail(file, path, "'Axis' must be x, y, z or three numbers, not all zero (got '" + a + "')");
+  for (double& v : axis) v /= std::sqrt(n2);
+  return axis;
+}
+
+std::vector<HoleSpec> parseHoles(const PL& holes, bool box, const std::string& file) {
+  std::vector<HoleSpec> out;
+  for (auto it = holes.begin(); it != holes.end(); ++it) {
+    const std::string hpath = "Discretization/Holes/" + holes.name(it);
+    if (!holes.entry(it).isList())
+      fail(file, "Discretization/Holes", "unknown parameter '" + holes.name(it) + "' (each hole is a sub-list)");
+    const ParameterValues h = readList(holes.sublist(holes.name(it)), holeSpecs(box), {}, file, hpath);
+    HoleSpec hole;
+    hole.centre = {h.get("X Center"), h.get("Y Center"), box ? h.get("Z Center") : 0.0};
+    hole.radius = h.get("Radius");
+    hole.axis = box ? holeAxis(h.text("Axis"), file, hpath) : std::array<double, 3>{0.0, 0.0, 1.0};
+    out.push_back(hole);
+  }
+  return out;
+}
+
+void parseGenerator(const PL& d, DiscretizationSpec& s, const std::string& file) {
+  const bool box = s.type == DiscretizationSpec::Type::BoxWithHoles;
+  const ParameterValues v = readList(d, discretizationSpecs(box ? "Box With Holes" : "Rectangle With Holes"),
+                                     {"Holes"}, file, "Discretization");
+  const char* ax[3] = {"X", "Y", "Z"};
+  for (int a = 0; a < (box ? 3 : 2); ++a) {
+    s.origin[a] = v.get(std::string(ax[a]) + " Origin");
+    s.length[a] = v.get(std::string(ax[a]) + " Length");
+  }
+  s.spacing = v.get("Spacing");
+  s.gridNodes = v.text("Grid") == "Nodes";
+  if (!box) s.thickness = v.get("Thickness");
+  s.layerWidth = v.get("Layer Width", 0.0);
+  std::vector<std::string> faces = {"Left", "Right", "Bottom", "Top"};
+  if (box) faces.insert(faces.end(), {"Back", "Front"});
+  for (const std::string& f : splitWords(v.has("Fictitious Layers") ? v.text("Fictitious Layers") : "")) {
+    if (std::find(faces.begin(), faces.end(), f) == faces.end())
+      fail(file, "Discretization", "'Fictitious Layers' names unknown face '" + f + "' (faces: " + joinNames(faces) + ")");
+    if (std::find(s.layers.begin(), s.layers.end(), f) != s.layers.end())
+      fail(file, "Discretization", "'Fictitious Layers' names face '" + f + "' twice");
+    s.layers.push_back(f);
+  }
+  if (d.isSublist("Holes")) s.holes = parseHoles(d.sublist("Holes"), box, file);
+}
+
+}  // namespace
+
+std::vector<ParameterSpec> discretizationSpecs(const std::string& type) {
+  std::vector<ParameterSpec> s = {
+      S::text("Type", "how the points are made (sections below)").need().oneOf(kTypes),
+      S::text("NeighborhoodType", "Peridigm's; only `Spherical` is accepted (and is what is done)").oneOf({"Spherical"}),
+      S::text("Influence Function",
+              "`One`, `Parabolic Decay`, `Gaussian`, or an expression in `zeta` and `horizon`").byDefault("One"),
+      S::flag("Partial Volume",
+              "`false`: Peridigm's rule, a neighbour counts whole if its centre is within δ; `true`: every "
+              "neighbour whose grid cell overlaps the horizon ball counts with the share of its cell inside it "
+              "(regular grids only)").byDefault("false")};
+  if (type == "Text File")
+    s.push_back(S::text("Input Mesh File", "file of lines `x y z block_id volume`; `#` starts a comment").need());
+  if (type == "Rectangle With Holes" || type == "Box With Holes") {
+    const bool box = type == "Box With Holes";
+    for (const char* a : {"X", "Y", "Z"}) {
+      if (!box && std::string(a) == "Z") break;
+      s.push_back(S::real(std::string(a) + " Origin", "lower corner").byDefault("0"));
+      s.push_back(S::real(std::string(a) + " Length", "size; a multiple of `Spacing`").need().positive());
+    }
+    s.push_back(S::real("Spacing", "grid spacing Δx (the same in every direction)").need().positive());
+    if (!box) s.push_back(S::real("Thickness", "out-of-plane thickness; volume = Δx²·Thickness").need().positive());
+    s.push_back(S::text("Grid", "`Cell Centers`: N = L/Δx points at cell centres; `Nodes`: N + 1 points at x0 + iΔx")
+                    .byDefault("Cell Centers").oneOf({"Cell Centers", "Nodes"}));
+    s.push_back(S::text("Fictitious Layers",
+                        std::string("faces that get a layer outside them, space- or comma-separated: `Left` (min x), "
+                                    "`Right`, `Bottom` (min y), `Top`") + (box ? ", `Back` (min z), `Front`" : "")));
+    s.push_back(S::real("Layer Width", "layer width; default: the largest `Horizon` in `Blocks`").positive());
+  }
+  return s;
+}
+
+std::vector<ParameterSpec> quickGridSpecs() {
+  std::vector<ParameterSpec> s = {S::text("Type", "`PdQuickGrid` (Peridigm's)").oneOf({"PdQuickGrid"})};
+  for (const char* a : {"X", "Y", "Z"}) s.push_back(S::real(std::string(a) + " Origin", "corner of the box").need());
+  for (const char* a : {"X", "Y", "Z"}) s.push_back(S::real(std::string(a) + " Length", "box size").need().positive());
+  for (const char* a : {"X", "Y", "Z"})
+    s.push_back(S::integer(std::string("Number Points ") + a, "cells per direction").need().atLeast(1));
+  return s;
+}
+
+std::vector<ParameterSpec> holeSpecs(bool box) {
+  std::vector<ParameterSpec> s = {S::real("X Center", "hole axis position").need(), S::real("Y Center", "").need(),
+                                  S::real("Radius", "hole radius").need().positive()};
+  if (box) {
+    s.push_back(S::real("Z Center", "").byDefault("0"));
+    s.push_back(S::text("Axis", "`x`, `y`, `z` or three numbers (a direction)").byDefault("z"));
+  }
+  return s;
+}
+
+DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, const std::string& dir) {
+  const std::string path = "Discretization";
+  if (!d.isParameter("Type")) fail(file, path, "missing required parameter 'Type'");
+  const std::string type = getText(d, "Type", "");
+  if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
+    fail(file, path, "'Type' = '" + type + "' is not one of " + joinNames(kTypes));
+  DiscretizationSpec s;
+  if (type == "PdQuickGrid") {
+    s.type = DiscretizationSpec::Type::QuickGrid;
+    checkList(d, discretizationSpecs(type), {"TensorProduct3DMeshGenerator"}, file, path);
+    const ParameterValues g = readList(requireSublist(d, "TensorProduct3DMeshGenerator", file, path), quickGridSpecs(),
+                                       {}, file, path + "/TensorProduct3DMeshGenerator");
+    const char* ax[3] = {"X", "Y", "Z"};
+    for (int a = 0; a < 3; ++a) {
+      s.origin[a] = g.get(std::string(ax[a]) + " Origin");
+      s.length[a] = g.get(std::string(ax[a]) + " Length");
+      s.count[a] = static_cast<int>(g.get(std::string("Number Points ") + ax[a]));
+    }
+  } else if (type == "Text File") {
+    s.type = DiscretizationSpec::Type::TextFile;
+    checkList(d, discretizationSpecs(type), {}, file, path);
+    const std::string name = getText(d, "Input Mesh File", "");
+    s.meshFile = name.empty() || name[0] == '/' || dir.empty() || dir == "." ? name : dir + "/" + name;
+  } else {
+    s.type = type == "Box With Holes" ? DiscretizationSpec::Type::BoxWithHoles
+                                      : DiscretizationSpec::Type::RectangleWithHoles;
+    parseGenerator(d, s, file);
+  }
+  const ParameterValues common = readList(d, discretizationSpecs(type), {"TensorProduct3DMeshGenerator", "Holes"}, file, path);
+  s.influence = influenceFromName(common.text("Influence Function"), file + ": " + path);
+  s.partialVolume = common.flag("Partial Volume");
+  if (s.partialVolume && s.type == DiscretizationSpec::Type::TextFile)
+    fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "
+                     "Holes): a Text File discretization has no cells to intersect with the horizon");
+  return s;
+}
+
+void applyDefaultLayerWidth(DiscretizationSpec& d, double maxHorizon, const std::string& file) {
+  if (d.layers.empty() || d.layerWidth > 0.0) return;
+  d.layerWidth = maxHorizon;
+  if (!(d.layerWidth > 0.0)) fail(file, "Discretization", "'Layer Width' is needed: no block Horizon to default to");
+}
+
+std::vector<std::string> generatedNodeSetNames(const DiscretizationSpec& d) {
+  std::vector<std::string> out;
+  for (const std::string& f : d.layers) out.push_back(f + " Layer");
+  return out;
+}
+
+}  // namespace pf

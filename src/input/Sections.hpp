@@ -1,0 +1,49 @@
+#pragma once
+// The parsers of the deck's sections and the parameters each declares (also the source of the tables
+// in docs/input.md, see ParameterTables.hpp). Internal to src/input; a Deck is built from them in order.
+#include <set>
+#include <string>
+#include <vector>
+
+#include "Deck.hpp"
+#include "ListReader.hpp"
+
+namespace pf {
+
+// Discretization. defaultLayerWidth is applied by readDeck once the blocks are known.
+std::vector<ParameterSpec> discretizationSpecs(const std::string& type);  // type "": the common ones
+std::vector<ParameterSpec> quickGridSpecs();
+std::vector<ParameterSpec> holeSpecs(bool box);
+DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, const std::string& dir);
+// Layers without a "Layer Width" take the largest block horizon (maxHorizon); none: an InputError.
+void applyDefaultLayerWidth(DiscretizationSpec& d, double maxHorizon, const std::string& file);
+// Generated node-set names ("Left Layer", ...) of a discretization.
+std::vector<std::string> generatedNodeSetNames(const DiscretizationSpec& d);
+
+// Materials and Blocks.
+std::vector<ParameterSpec> blockSpecs();
+MaterialSpec parseMaterial(const PL& m, const std::string& name, const std::string& file);
+std::vector<MaterialSpec> parseMaterials(const PL& deck, const std::string& file);
+std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<MaterialSpec>& materials,
+                                        const std::string& file);
+
+// Boundary Conditions: node sets first (a condition may name a set defined after it), then conditions.
+std::vector<ParameterSpec> regionSpecs();
+std::vector<ParameterSpec> conditionSpecs();
+std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string>& generated, const std::string& file,
+                                       const std::string& dir);
+std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::string>& nodeSets,
+                                           const std::string& file);
+
+// Solver lists.
+std::vector<ParameterSpec> solverListSpecs();
+SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& listName);
+
+// Output lists. conditions: for "Applied Displacement"; dynamic: a Verlet solver runs (Acceleration).
+std::vector<ParameterSpec> outputSpecs();
+std::vector<ParameterSpec> probeSpecs();
+OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& listName,
+                       const std::set<std::string>& nodeSets, const std::vector<ConditionSpec>& conditions,
+                       bool dynamic);
+
+}  // namespace pf

@@ -1,0 +1,95 @@
+// A "Solver" list (or Peridigm's Solver1, Solver2, ...) -> SolverSpec: the one solver sub-list checked
+// against the solver registry's specs, and the load times it steps through.
+#include <cmath>
+
+#include "Sections.hpp"
+#include "core/SolverEntry.hpp"
+
+namespace pf {
+
+namespace {
+
+using S = ParameterSpec;
+
+// Peridigm's QuasiStatic may list its load times ("Time Steps") instead of Final Time and a step count.
+std::vector<double> timeList(const ParameterValues& q, const std::string& file, const std::string& qp) {
+  std::vector<double> times;
+  for (const std::string& w : splitWords(q.text("Time Steps"))) {
+    std::size_t used = 0;
+    double t = 0;
+    try {
+      t = std::stod(w, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != w.size() || !std::isfinite(t)) fail(file, qp, "'Time Steps' entry '" + w + "' is not a number");
+    if (!times.empty() && !(t > times.back()))
+      fail(file, qp, "'Time Steps' must increase (" + numberText(t) + " follows " + numberText(times.back()) + ")");
+    times.push_back(t);
+  }
+  if (times.size() < 2) fail(file, qp, "'Time Steps' needs the initial time and at least one load time");
+  return times;
+}
+
+}  // namespace
+
+std::vector<ParameterSpec> solverListSpecs() {
+  return {S::flag("Verbose", "accepted (Peridigm's)"), S::real("Initial Time", "start time").byDefault("0"),
+          S::real("Final Time", "end time, > `Initial Time` (not with QuasiStatic `Time Steps`)")};
+}
+
+SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& path) {
+  std::vector<std::string> names;
+  for (const SolverEntry& e : solverRegistry()) names.push_back(e.name);
+  std::vector<ParameterSpec> listSpecs = solverListSpecs();
+  const bool hasTimeList = s.isSublist("QuasiStatic") && s.sublist("QuasiStatic").isParameter("Time Steps") &&
+                           !s.isParameter("Final Time");
+  if (!hasTimeList) listSpecs[2] = listSpecs[2].need();
+  const ParameterValues list = readList(s, listSpecs, names, file, path);
+  int count = 0;
+  for (const std::string& n : names) count += s.isSublist(n) ? 1 : 0;
+  if (count != 1) fail(file, path, "exactly one solver sub-list is required, one of " + joinNames(names));
+
+  SolverSpec spec;
+  spec.listName = path;
+  spec.verbose = list.get("Verbose", 0.0) != 0.0;
+  for (const SolverEntry& e : solverRegistry())
+    if (s.isSublist(e.name)) spec.type = e.name;
+  const SolverEntry& entry = *findSolver(spec.type);
+  const std::string sp = path + "/" + spec.type;
+  const PL& sub = s.sublist(spec.type);
+  spec.options = readList(sub, entry.parameters, entry.passThrough, file, sp);
+  for (const std::string& n : entry.passThrough)
+    if (sub.isSublist(n)) {
+      ParamTree::Entry x;
+      x.name = n;
+      x.kind = ParamTree::Entry::Kind::List;
+      x.list = std::make_shared<ParamTree>(treeOf(sub.sublist(n), file, sp + "/" + n));
+      spec.passThrough.entries.push_back(x);
+    }
+
+  const double t0 = list.get("Initial Time");
+  if (hasTimeList) {
+    if (list.has("Initial Time"))
+      fail(file, path, "'Initial Time' with 'Time Steps': the first of the 'Time Steps' is the initial time");
+    if (spec.options.has("Number of Load Steps"))
+      fail(file, sp, "give 'Time Steps' or 'Number of Load Steps' (with the list's 'Final Time'), not both");
+    spec.times = timeList(spec.options, file, sp);
+    return spec;
+  }
+  if (spec.options.has("Time Steps"))
+    fail(file, sp, "'Time Steps' replaces the list's 'Final Time': give one of them, not both");
+  const double t1 = list.get("Final Time");
+  if (!(t1 > t0)) fail(file, path, "'Final Time' (" + numberText(t1) + ") must exceed 'Initial Time' (" + numberText(t0) + ")");
+  if (!entry.loadSteps) {
+    spec.times = {t0, t1};
+    return spec;
+  }
+  if (!spec.options.has("Number of Load Steps")) fail(file, sp, "missing required parameter 'Number of Load Steps'");
+  const int n = static_cast<int>(spec.options.get("Number of Load Steps"));
+  spec.times = {t0};
+  for (int k = 1; k <= n; ++k) spec.times.push_back(t0 + (t1 - t0) * k / n);  // Peridigm's t0 + k (t1 - t0) / n
+  return spec;
+}
+
+}  // namespace pf

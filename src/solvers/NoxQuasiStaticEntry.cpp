@@ -1,0 +1,79 @@
+// The registry entries of the Newton-Krylov solver: Periforge's "NOXQuasiStatic" and Peridigm's
+// "QuasiStatic", both served by NoxQuasiStaticSolver.
+#include <algorithm>
+
+#include "NoxQuasiStaticSolver.hpp"
+
+namespace pf {
+
+namespace {
+
+using S = ParameterSpec;
+
+std::vector<ParameterSpec> commonSpecs() {
+  return {S::real("Relative Tolerance", "residual / load scale (reaction + body force) that ends a step")
+              .byDefault("1e-10").positive(),
+          S::real("Absolute Tolerance", "residual force-density norm that ends a step; given alone (without "
+                                        "`Relative Tolerance`) it is the only test").positive(),
+          S::integer("Maximum Solver Iterations", "Newton iterations per (sub)step").byDefault("30").atLeast(1),
+          S::flag("Verbose", "print NOX's residual history").byDefault("false")};
+}
+
+std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passThrough) {
+  NoxOptions o;
+  // Peridigm's decks give one of the two; an absolute tolerance alone means just that test.
+  const bool absOnly = p.has("Absolute Tolerance") && !p.has("Relative Tolerance");
+  o.relativeTolerance = absOnly ? 0.0 : p.get("Relative Tolerance");
+  o.absoluteTolerance = p.get("Absolute Tolerance", 0.0);
+  o.maxIterations = static_cast<int>(
+      p.has("Maximum Solver Iterations") ? p.get("Maximum Solver Iterations") : p.get("Max Solver Iterations", p.get("Maximum Solver Iterations")));
+  o.maxCuts = static_cast<int>(p.get("Maximum Load Step Cuts", o.maxCuts));
+  o.verbose = p.flag("Verbose");
+  o.precBondRadius = p.get("Preconditioner Bond Radius", o.precBondRadius);
+  o.nox = passThrough;
+  if (p.has("Nonlinear Solver")) {
+    ParamTree::Entry e;
+    e.name = "Nonlinear Solver";
+    e.kind = ParamTree::Entry::Kind::String;
+    e.text = p.text("Nonlinear Solver");
+    o.nox.entries.push_back(e);
+  }
+  o.fallback.relativeTolerance = std::max(o.relativeTolerance, 1e-10);  // ADR's round-off floor is ~3e-13
+  o.fallback.absoluteTolerance = o.absoluteTolerance;
+  return std::unique_ptr<Solver>(new NoxQuasiStaticSolver(o));
+}
+
+}  // namespace
+
+SolverEntry NoxQuasiStaticSolver::entry() {
+  SolverEntry e;
+  e.name = "NOXQuasiStatic";
+  e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES, Ifpack/ML preconditioner)";
+  e.loadSteps = true;
+  e.parameters = commonSpecs();
+  e.parameters.insert(e.parameters.begin(), S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1));
+  e.parameters.push_back(S::integer("Max Solver Iterations", "Peridigm's name for `Maximum Solver Iterations`").atLeast(1));
+  e.parameters.push_back(S::integer("Maximum Load Step Cuts", "a failing step is halved at most this many times, then "
+                                                              "relaxed by ADR").byDefault("4").nonNegative());
+  e.parameters.push_back(S::text("Nonlinear Solver", "NOX's (default `Line Search Based`)"));
+  e.parameters.push_back(S::real("Preconditioner Bond Radius", "the preconditioner keeps bonds up to this many shortest "
+                                                               "bonds long").byDefault("3").atLeast(1));
+  e.passThrough = {"Direction", "Line Search", "Printing", "Solver Options"};
+  e.create = create;
+  return e;
+}
+
+SolverEntry NoxQuasiStaticSolver::peridigmEntry() {
+  SolverEntry e;
+  e.name = "QuasiStatic";
+  e.doc = "Peridigm's implicit quasi-static solver; served by the NOXQuasiStatic engine";
+  e.loadSteps = true;
+  e.parameters = commonSpecs();
+  e.parameters.insert(e.parameters.begin(),
+                      S::integer("Number of Load Steps", "n (or `Time Steps` without the list's `Final Time`)").atLeast(1));
+  e.parameters.insert(e.parameters.begin() + 1, S::text("Time Steps", "the load times, the first being the initial time"));
+  e.create = create;
+  return e;
+}
+
+}  // namespace pf
