@@ -2,9 +2,11 @@
 
 #include <fstream>
 
+#include <Teuchos_FileInputSource.hpp>
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 #include <Teuchos_YamlParameterListCoreHelpers.hpp>
 
+#include "StrictXml.hpp"
 #include "core/InputError.hpp"
 
 namespace pf {
@@ -51,7 +53,12 @@ Teuchos::RCP<Teuchos::ParameterList> readInput(const std::string& path) {
   }
   const bool yaml = endsWith(path, ".yaml") || endsWith(path, ".yml");
   try {
-    return yaml ? Teuchos::getParametersFromYamlFile(path) : Teuchos::getParametersFromXmlFile(path);
+    if (yaml) return Teuchos::getParametersFromYamlFile(path);
+    const Teuchos::XMLObject xml = Teuchos::FileInputSource(path).getObject();
+    checkStrictly(xml, path);
+    return Teuchos::getParametersFromXmlFile(path);
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     throw InputError(path + ": cannot parse " + (yaml ? "YAML" : "XML") + " input: " + firstLine(e.what()));
   }

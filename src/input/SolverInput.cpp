@@ -77,8 +77,7 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
     spec.times = timeList(spec.options, file, sp);
     return spec;
   }
-  if (spec.options.has("Time Steps"))
-    fail(file, sp, "'Time Steps' replaces the list's 'Final Time': give one of them, not both");
+  // With the list's Final Time given, Peridigm steps by Number of Load Steps and ignores Time Steps.
   const double t1 = list.get("Final Time");
   if (!(t1 > t0)) fail(file, path, "'Final Time' (" + numberText(t1) + ") must exceed 'Initial Time' (" + numberText(t0) + ")");
   if (!entry.loadSteps) {
