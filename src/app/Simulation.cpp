@@ -1,8 +1,5 @@
 #include "Simulation.hpp"
 
-#include <Epetra_MpiComm.h>
-#include <mpi.h>
-
 #include <chrono>
 #include <cstdio>
 #include <set>
@@ -14,6 +11,7 @@
 #include "core/Material.hpp"
 #include "model/ModelBuilder.hpp"
 #include "output/OutputManager.hpp"
+#include "parallel/Communicator.hpp"
 #include "solvers/SolverFactory.hpp"
 
 namespace pf {
@@ -68,8 +66,8 @@ void expandDefaultBlock(Teuchos::ParameterList& input, const std::string& inputF
 }  // namespace
 
 int runSimulation(const std::string& inputFile) {
-  Epetra_MpiComm comm(MPI_COMM_WORLD);
-  const int rank = comm.MyPID();
+  const Communicator comm = Communicator::world();
+  const int rank = comm.rank();
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   try {
@@ -87,7 +85,7 @@ int runSimulation(const std::string& inputFile) {
     const double bonds = model.sum(static_cast<double>(model.layout().family().numBonds()));
     if (rank == 0)
       std::printf("periforge: %s: %d points, %.0f bonds, %d rank(s), set-up %.2f s, solver %s\n", inputFile.c_str(),
-                  model.layout().numGlobal(), bonds, comm.NumProc(), setup, solvers.front()->name().c_str());
+                  model.layout().numGlobal(), bonds, comm.size(), setup, solvers.front()->name().c_str());
 
     OutputFanout output;
     for (const std::string& n : numberedLists(*input, "Output"))

@@ -40,7 +40,7 @@ int blockNumber(const std::string& name, const std::string& where) {
 
 }  // namespace
 
-Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inputFile, const Epetra_MpiComm& comm) {
+Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inputFile, const Communicator& comm) {
   Problem pb;
   const std::string dir = directoryOf(inputFile);
   pb.cloud = buildDiscretization(input.sublist("Discretization"), inputFile, dir, maxBlockHorizon(input));
@@ -98,7 +98,7 @@ Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inp
                        ": the discretization is 2D; set 'Plane Stress' or 'Plane Strain' and 'Thickness'");
   }
 
-  std::vector<int> owner = partitionRcb(cloud.x, comm.Comm());
+  std::vector<int> owner = partitionRcb(cloud.x, comm);
   auto layout = std::make_unique<DistributedLayout>(comm, cloud.x, owner, horizon, cloud.block, cloud.influence,
                                                     cloud.partialVolume ? &cloud.cell : nullptr);
   const std::vector<int>& gids = layout->gids();

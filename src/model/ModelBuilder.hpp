@@ -1,7 +1,6 @@
 #pragma once
 // Builds the distributed Model from a validated input list: discretization, blocks and materials,
 // Zoltan partition, ghosting, bonds, node sets and boundary conditions. Every rank calls it.
-#include <Epetra_MpiComm.h>
 #include <Teuchos_ParameterList.hpp>
 
 #include <map>
@@ -12,6 +11,7 @@
 #include "discretization/Discretization.hpp"
 #include "core/Expression.hpp"
 #include "Model.hpp"
+#include "parallel/Communicator.hpp"
 
 namespace pf {
 
@@ -23,6 +23,6 @@ struct Problem {
   std::vector<std::string> prescribedNodeSets;           // node sets carrying a Prescribed Displacement
 };
 
-Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inputFile, const Epetra_MpiComm& comm);
+Problem buildProblem(const Teuchos::ParameterList& input, const std::string& inputFile, const Communicator& comm);
 
 }  // namespace pf

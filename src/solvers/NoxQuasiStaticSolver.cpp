@@ -18,6 +18,7 @@
 #include "LoadStepping.hpp"
 #include "core/Material.hpp"
 #include "model/Model.hpp"
+#include "parallel/CommunicatorImpl.hpp"
 
 namespace pf {
 namespace {
@@ -83,7 +84,7 @@ class TangentOperator : public Epetra_Operator, public NOX::Epetra::Interface::J
     for (double r : model.layout().family().refLength) shortest = std::min(shortest, r);
     double g = 0;
     double neg = -shortest;
-    model.layout().comm().MaxAll(&neg, &g, 1);
+    model.layout().comm().max(&neg, &g, 1);
     step_ = 1e-7 * (-g);
   }
   bool exact() const { return exact_; }
@@ -108,7 +109,7 @@ class TangentOperator : public Epetra_Operator, public NOX::Epetra::Interface::J
       } else {
         double local = 0, vmax = 0;
         for (int k = 0; k < n; ++k) local = std::max(local, std::fabs(du_[k]));
-        model_.layout().comm().MaxAll(&local, &vmax, 1);
+        model_.layout().comm().max(&local, &vmax, 1);
         if (vmax == 0) {
           std::fill(df_.begin(), df_.end(), 0.0);
         } else {
@@ -210,7 +211,7 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
         if (keep[b]) moment[1] += kr2;
       }
     }
-    L.comm().SumAll(moment, total, 2);
+    L.comm().sum(moment, total, 2);
     boost = total[1] > 0 ? total[0] / total[1] : 1.0;
   }
   auto A = Teuchos::rcp(new Epetra_CrsMatrix(Copy, map, 0));
@@ -244,7 +245,7 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
     }
   }
   double in[2] = {diagTotal, static_cast<double>(diagCount)}, out[2];
-  L.comm().SumAll(in, out, 2);
+  L.comm().sum(in, out, 2);
   const double s = out[1] > 0 ? out[0] / out[1] : 1.0;
   A->FillComplete();
   // Prescribed rows: s on the diagonal, nothing else (the constraint x = xbar decouples them).
@@ -299,7 +300,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
     std::vector<int> dofGids(n);
     for (int i = 0; i < model.numOwned(); ++i)
       for (int a = 0; a < 3; ++a) dofGids[3 * i + a] = 3 * model.layout().gids()[i] + a;
-    map_ = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm()));
+    map_ = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm().impl().epetra));
     M_ = pairMatrix(model, *map_, opt_.precBondRadius, &scale_);
   }
   const Epetra_Map& map = *map_;
