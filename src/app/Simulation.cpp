@@ -12,6 +12,7 @@
 #include "model/ModelBuilder.hpp"
 #include "output/OutputManager.hpp"
 #include "parallel/Communicator.hpp"
+#include "core/Log.hpp"
 #include "solvers/SolverFactory.hpp"
 
 namespace pf {
@@ -68,6 +69,7 @@ void expandDefaultBlock(Teuchos::ParameterList& input, const std::string& inputF
 int runSimulation(const std::string& inputFile) {
   const Communicator comm = Communicator::world();
   const int rank = comm.rank();
+  setPrintingRank(rank == 0);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   try {
