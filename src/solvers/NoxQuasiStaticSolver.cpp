@@ -294,16 +294,27 @@ void setDefault(Teuchos::ParameterList& l, const std::string& name, T v) {
 
 }  // namespace
 
+struct NoxQuasiStaticSolver::Linear {
+  Teuchos::RCP<Epetra_Map> map;        // owned dofs, global id 3 * point + component
+  Teuchos::RCP<Epetra_CrsMatrix> M;    // preconditioner matrix (pair stiffness)
+  Teuchos::RCP<Epetra_Operator> prec;  // its Ifpack or ML preconditioner, built once for the whole run
+};
+
+NoxQuasiStaticSolver::NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)), linear_(std::make_unique<Linear>()) {}
+
+NoxQuasiStaticSolver::~NoxQuasiStaticSolver() = default;
+
 NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::vector<double>& u, double t) {
   const int n = model.numDofs();
-  if (M_.is_null()) {  // the pair stiffness depends on the reference configuration only: build it once
+  Linear& lin = *linear_;
+  if (lin.M.is_null()) {  // the pair stiffness depends on the reference configuration only: build it once
     std::vector<int> dofGids(n);
     for (int i = 0; i < model.numOwned(); ++i)
       for (int a = 0; a < 3; ++a) dofGids[3 * i + a] = 3 * model.layout().gids()[i] + a;
-    map_ = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm().impl().epetra));
-    M_ = pairMatrix(model, *map_, opt_.precBondRadius, &scale_);
+    lin.map = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm().impl().epetra));
+    lin.M = pairMatrix(model, *lin.map, opt_.precBondRadius, &scale_);
   }
-  const Epetra_Map& map = *map_;
+  const Epetra_Map& map = *lin.map;
   const double scale = scale_;
 
   std::vector<double> xbar(u);  // prescribed values were set by the predictor
@@ -339,15 +350,15 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
   if (precType == "New Ifpack") {
     Teuchos::ParameterList& ifp = ls.sublist("Ifpack");
     setDefault(ifp, "fact: level-of-fill", 0);
-    if (prec_.is_null()) prec_ = factorIfpack(M_, ls.get<std::string>("Ifpack Preconditioner", "ILU"),
-                                              ls.get<int>("Overlap", 0), ifp);
+    if (lin.prec.is_null()) lin.prec = factorIfpack(lin.M, ls.get<std::string>("Ifpack Preconditioner", "ILU"),
+                                                    ls.get<int>("Overlap", 0), ifp);
   } else if (precType == "ML") {
-    if (prec_.is_null()) prec_ = buildMl(M_, ls.sublist("ML"));
+    if (lin.prec.is_null()) lin.prec = buildMl(lin.M, ls.sublist("ML"));
   }
-  Teuchos::RCP<Epetra_Operator> M = M_;
-  if (!prec_.is_null()) {
+  Teuchos::RCP<Epetra_Operator> M = lin.M;
+  if (!lin.prec.is_null()) {
     ls.set("Preconditioner", "User Defined");
-    M = prec_;
+    M = lin.prec;
   }
   Teuchos::ParameterList& search = params->sublist("Line Search");
   setDefault(search, "Method", "Polynomial");
