@@ -1,16 +1,14 @@
 // periforge input.xml|input.yaml — runs one peridynamic simulation (see README.md and docs/input.md).
-#include <mpi.h>
-
 #include <cstdio>
 #include <cstring>
 #include <string>
 
 #include "app/Simulation.hpp"
+#include "parallel/Communicator.hpp"
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  pf::MpiSession mpi(argc, argv);  // MPI_Finalize when main returns
+  const int rank = mpi.rank();
   int code = 0;
   if (argc != 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     if (rank == 0) std::fprintf(argc == 2 ? stdout : stderr, "usage: periforge input.xml|input.yaml\n");
@@ -18,6 +16,5 @@ int main(int argc, char** argv) {
   } else {
     code = pf::runSimulation(argv[1]);
   }
-  MPI_Finalize();
   return code;
 }

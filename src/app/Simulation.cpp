@@ -1,8 +1,5 @@
 #include "Simulation.hpp"
 
-#include <Epetra_MpiComm.h>
-#include <mpi.h>
-
 #include <chrono>
 #include <cstdio>
 
@@ -11,6 +8,8 @@
 #include "core/Material.hpp"
 #include "model/ModelBuilder.hpp"
 #include "output/OutputManager.hpp"
+#include "parallel/Communicator.hpp"
+#include "core/Log.hpp"
 #include "solvers/SolverFactory.hpp"
 
 namespace pf {
@@ -36,8 +35,9 @@ int fail(int rank, const std::string& kind, const std::string& what) {
 }  // namespace
 
 int runSimulation(const std::string& inputFile) {
-  Epetra_MpiComm comm(MPI_COMM_WORLD);
-  const int rank = comm.MyPID();
+  const Communicator comm = Communicator::world();
+  const int rank = comm.rank();
+  setPrintingRank(rank == 0);
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   try {
@@ -52,7 +52,7 @@ int runSimulation(const std::string& inputFile) {
     const double bonds = model.sum(static_cast<double>(model.layout().family().numBonds()));
     if (rank == 0)
       std::printf("periforge: %s: %d points, %.0f bonds, %d rank(s), set-up %.2f s, solver %s\n", inputFile.c_str(),
-                  model.layout().numGlobal(), bonds, comm.NumProc(), setup, solvers.front()->name().c_str());
+                  model.layout().numGlobal(), bonds, comm.size(), setup, solvers.front()->name().c_str());
 
     OutputFanout output;
     for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));

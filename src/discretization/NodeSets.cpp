@@ -1,7 +1,5 @@
 #include "NodeSets.hpp"
 
-#include <mpi.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -9,6 +7,7 @@
 #include <sstream>
 
 #include "core/InputError.hpp"
+#include "core/Log.hpp"
 #include "core/Words.hpp"
 
 namespace pf {
@@ -21,10 +20,7 @@ namespace {
 
 // Printed by rank 0 only (every rank resolves the same node sets).
 void warn(const std::string& file, const std::string& path, const std::string& msg) {
-  int initialized = 0, rank = 0;
-  MPI_Initialized(&initialized);
-  if (initialized) MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank == 0) std::fprintf(stderr, "periforge: warning: %s: %s: %s\n", file.c_str(), path.c_str(), msg.c_str());
+  pf::warn(file + ": " + path + ": " + msg);  // qualified: this 3-argument warn hides core's
 }
 
 // Ids are 1-based global ids in the order of the cloud (Peridigm's convention).

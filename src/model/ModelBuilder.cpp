@@ -45,7 +45,7 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
 
 }  // namespace
 
-Problem buildProblem(const Deck& deck, const Epetra_MpiComm& comm) {
+Problem buildProblem(const Deck& deck, const Communicator& comm) {
   Problem pb;
   const std::string& inputFile = deck.file;
   pb.cloud = buildDiscretization(deck.discretization, inputFile);
@@ -72,7 +72,7 @@ Problem buildProblem(const Deck& deck, const Epetra_MpiComm& comm) {
                        ": the discretization is 2D; set 'Plane Stress' or 'Plane Strain' and 'Thickness'");
   }
 
-  std::vector<int> owner = partitionRcb(cloud.x, comm.Comm());
+  std::vector<int> owner = partitionRcb(cloud.x, comm);
   auto layout = std::make_unique<DistributedLayout>(comm, cloud.x, owner, horizon, cloud.block, cloud.influence,
                                                     cloud.partialVolume ? &cloud.cell : nullptr);
   const std::vector<int>& gids = layout->gids();

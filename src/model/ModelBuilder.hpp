@@ -1,7 +1,6 @@
 #pragma once
 // Builds the distributed Model from a validated Deck: discretization, blocks and materials, Zoltan
 // partition, ghosting, bonds, node sets and boundary conditions. Every rank calls it.
-#include <Epetra_MpiComm.h>
 
 #include <map>
 #include <memory>
@@ -11,6 +10,7 @@
 #include "discretization/Discretization.hpp"
 #include "input/Deck.hpp"
 #include "Model.hpp"
+#include "parallel/Communicator.hpp"
 
 namespace pf {
 
@@ -22,6 +22,6 @@ struct Problem {
   std::vector<std::string> prescribedNodeSets;           // node sets carrying a Prescribed Displacement
 };
 
-Problem buildProblem(const Deck& deck, const Epetra_MpiComm& comm);
+Problem buildProblem(const Deck& deck, const Communicator& comm);
 
 }  // namespace pf

@@ -163,7 +163,7 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
   ++count_;
   if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % frequency_ != 0) return;
   const bool root = model_.layout().rank() == 0;
-  const Epetra_MpiComm& comm = model_.layout().comm();
+  const Communicator& comm = model_.layout().comm();
 
   // History row: reactions and probes are reduced over ranks (a probe lives on one rank, others add 0).
   std::vector<double> local;
@@ -180,7 +180,7 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
       for (int c = 0; c < ncomp; ++c) local.push_back(p.local >= 0 ? nodeValue(var, c, p.local, u, v, f) : 0.0);
     }
   std::vector<double> global(local.size());
-  if (!local.empty()) comm.SumAll(local.data(), global.data(), static_cast<int>(local.size()));
+  if (!local.empty()) comm.sum(local.data(), global.data(), static_cast<int>(local.size()));
   if (root) {
     std::vector<double> row = {report.time, static_cast<double>(count_ - 1)};
     if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));

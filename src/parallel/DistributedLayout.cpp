@@ -1,5 +1,8 @@
 #include "DistributedLayout.hpp"
 
+#include <Epetra_BlockMap.h>
+#include <Epetra_Export.h>
+#include <Epetra_Import.h>
 #include <Epetra_Vector.h>
 
 #include <algorithm>
@@ -11,15 +14,25 @@
 #include "discretization/NeighborSearch.hpp"
 #include "discretization/PartialVolume.hpp"
 #include "discretization/SpaceFillingCurve.hpp"
+#include "parallel/CommunicatorImpl.hpp"
 
 namespace pf {
 
-DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords,
+// Maps and transfers for 1- and 3-component data, index = ncomp == 3.
+struct DistributedLayout::Transfers {
+  std::unique_ptr<Epetra_BlockMap> owned[2], overlap[2], root[2];
+  std::unique_ptr<Epetra_Import> import[2], rootImport[2];
+  std::unique_ptr<Epetra_Export> exporter[2];
+};
+
+DistributedLayout::~DistributedLayout() = default;
+
+DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector<double>& coords,
                                      const std::vector<int>& owner, const std::vector<double>& horizon,
                                      const std::vector<int>& block, const Influence& influence,
                                      const std::array<double, 3>* cell)
     : comm_(comm) {
-  const int me = comm_.MyPID();
+  const int me = comm_.rank();
   numGlobal_ = static_cast<int>(owner.size());
   const std::vector<std::uint64_t> key = hilbertKeys(coords);
 
@@ -91,56 +104,48 @@ DistributedLayout::DistributedLayout(const Epetra_MpiComm& comm, const std::vect
     blocks_.back().end = i + 1;
   }
 
+  auto t = std::make_unique<Transfers>();
+  const Epetra_MpiComm& ecomm = comm_.impl().epetra;
   for (int k = 0; k < 2; ++k) {
     const int ncomp = k == 1 ? 3 : 1;
-    owned_[k].reset(new Epetra_BlockMap(-1, numOwned_, gids_.data(), ncomp, 0, comm_));
-    overlap_[k].reset(new Epetra_BlockMap(-1, numOverlap(), gids_.data(), ncomp, 0, comm_));
-    import_[k].reset(new Epetra_Import(*overlap_[k], *owned_[k]));
-    export_[k].reset(new Epetra_Export(*overlap_[k], *owned_[k]));
+    t->owned[k].reset(new Epetra_BlockMap(-1, numOwned_, gids_.data(), ncomp, 0, ecomm));
+    t->overlap[k].reset(new Epetra_BlockMap(-1, numOverlap(), gids_.data(), ncomp, 0, ecomm));
+    t->import[k].reset(new Epetra_Import(*t->overlap[k], *t->owned[k]));
+    t->exporter[k].reset(new Epetra_Export(*t->overlap[k], *t->owned[k]));
     std::vector<int> all;
     if (me == 0) {
       all.resize(numGlobal_);
       std::iota(all.begin(), all.end(), 0);
     }
-    root_[k].reset(new Epetra_BlockMap(-1, static_cast<int>(all.size()), all.data(), ncomp, 0, comm_));
-    rootImport_[k].reset(new Epetra_Import(*root_[k], *owned_[k]));
+    t->root[k].reset(new Epetra_BlockMap(-1, static_cast<int>(all.size()), all.data(), ncomp, 0, ecomm));
+    t->rootImport[k].reset(new Epetra_Import(*t->root[k], *t->owned[k]));
   }
+  transfers_ = std::move(t);
 }
 
 void DistributedLayout::importToOverlap(const double* owned, double* overlap, int ncomp) const {
   const int k = ncomp == 3 ? 1 : 0;
-  Epetra_Vector src(View, *owned_[k], const_cast<double*>(owned));
-  Epetra_Vector dst(View, *overlap_[k], overlap);
-  if (dst.Import(src, *import_[k], Insert) != 0) throw std::runtime_error("Epetra Import to ghosts failed");
+  Epetra_Vector src(View, *transfers_->owned[k], const_cast<double*>(owned));
+  Epetra_Vector dst(View, *transfers_->overlap[k], overlap);
+  if (dst.Import(src, *transfers_->import[k], Insert) != 0) throw std::runtime_error("Epetra Import to ghosts failed");
 }
 
 void DistributedLayout::exportAdd(const double* overlap, double* owned, int ncomp) const {
   const int k = ncomp == 3 ? 1 : 0;
-  Epetra_Vector src(View, *overlap_[k], const_cast<double*>(overlap));
-  Epetra_Vector dst(View, *owned_[k], owned);
+  Epetra_Vector src(View, *transfers_->overlap[k], const_cast<double*>(overlap));
+  Epetra_Vector dst(View, *transfers_->owned[k], owned);
   dst.PutScalar(0.0);
-  if (dst.Export(src, *export_[k], Add) != 0) throw std::runtime_error("Epetra Export from ghosts failed");
+  if (dst.Export(src, *transfers_->exporter[k], Add) != 0) throw std::runtime_error("Epetra Export from ghosts failed");
 }
 
 std::vector<double> DistributedLayout::gatherToRoot(const double* owned, int ncomp) const {
   const int k = ncomp == 3 ? 1 : 0;
-  std::vector<double> out(comm_.MyPID() == 0 ? static_cast<std::size_t>(ncomp) * numGlobal_ : 0);
-  Epetra_Vector src(View, *owned_[k], const_cast<double*>(owned));
-  Epetra_Vector dst(View, *root_[k], out.data());
-  if (dst.Import(src, *rootImport_[k], Insert) != 0) throw std::runtime_error("Epetra gather to rank 0 failed");
+  std::vector<double> out(comm_.rank() == 0 ? static_cast<std::size_t>(ncomp) * numGlobal_ : 0);
+  Epetra_Vector src(View, *transfers_->owned[k], const_cast<double*>(owned));
+  Epetra_Vector dst(View, *transfers_->root[k], out.data());
+  if (dst.Import(src, *transfers_->rootImport[k], Insert) != 0)
+    throw std::runtime_error("Epetra gather to rank 0 failed");
   return out;
-}
-
-double DistributedLayout::sum(double v) const {
-  double g = 0;
-  comm_.SumAll(&v, &g, 1);
-  return g;
-}
-
-double DistributedLayout::max(double v) const {
-  double g = 0;
-  comm_.MaxAll(&v, &g, 1);
-  return g;
 }
 
 }  // namespace pf

@@ -1,20 +1,15 @@
 #pragma once
-// The one place Periforge touches Epetra: owned and overlap (owned + ghost) maps of the points, the
-// Import that copies owned values to ghosts and the Export that adds ghost contributions back. Owned
+// The points' distribution over ranks: owned and overlap (owned + ghost) points, copying owned values to
+// ghosts and adding ghost contributions back (Epetra maps, Import and Export, kept in the .cpp). Owned
 // points are ordered by block, then along a Hilbert curve, so a family sits close in memory; bonds of
 // the owned points are built here once, on reference positions, in overlap-local indices.
-#include <Epetra_BlockMap.h>
-#include <Epetra_Export.h>
-#include <Epetra_Import.h>
-#include <Epetra_Map.h>
-#include <Epetra_MpiComm.h>
-
 #include <array>
 #include <memory>
 #include <vector>
 
 #include "core/BondFamily.hpp"
 #include "core/InfluenceFunction.hpp"
+#include "parallel/Communicator.hpp"
 
 namespace pf {
 
@@ -28,9 +23,12 @@ class DistributedLayout {
   // Whole cloud on every rank: coords (3 per point), owner rank, horizon and block id per point; the
   // influence function sets each bond's omega from its length and its owner's horizon. cell: the grid's
   // cell for partial-volume families (see buildFamilies), or null for whole neighbour volumes.
-  DistributedLayout(const Epetra_MpiComm& comm, const std::vector<double>& coords, const std::vector<int>& owner,
+  DistributedLayout(const Communicator& comm, const std::vector<double>& coords, const std::vector<int>& owner,
                     const std::vector<double>& horizon, const std::vector<int>& block, const Influence& influence,
                     const std::array<double, 3>* cell = nullptr);
+  ~DistributedLayout();
+  DistributedLayout(const DistributedLayout&) = delete;
+  DistributedLayout& operator=(const DistributedLayout&) = delete;
 
   int numOwned() const { return numOwned_; }
   int numOverlap() const { return static_cast<int>(gids_.size()); }
@@ -38,9 +36,9 @@ class DistributedLayout {
   const std::vector<int>& gids() const { return gids_; }      // overlap-local -> cloud index (0-based)
   const std::vector<BlockRange>& blocks() const { return blocks_; }
   const BondFamily& family() const { return family_; }
-  const Epetra_MpiComm& comm() const { return comm_; }
-  int rank() const { return comm_.MyPID(); }
-  int size() const { return comm_.NumProc(); }
+  const Communicator& comm() const { return comm_; }
+  int rank() const { return comm_.rank(); }
+  int size() const { return comm_.size(); }
 
   // overlap[0, ncomp*numOwned) = owned; ghosts filled from their owners.
   void importToOverlap(const double* owned, double* overlap, int ncomp) const;
@@ -49,19 +47,17 @@ class DistributedLayout {
   // Rank 0 gets ncomp values per point in cloud order; other ranks get an empty vector.
   std::vector<double> gatherToRoot(const double* owned, int ncomp) const;
 
-  double sum(double v) const;
-  double max(double v) const;
+  double sum(double v) const { return comm_.sum(v); }
+  double max(double v) const { return comm_.max(v); }
 
  private:
-  Epetra_MpiComm comm_;
+  Communicator comm_;
   int numOwned_ = 0, numGlobal_ = 0;
   std::vector<int> gids_;
   std::vector<BlockRange> blocks_;
   BondFamily family_;
-  // maps and transfers for 1- and 3-component data, index = ncomp == 3
-  std::unique_ptr<Epetra_BlockMap> owned_[2], overlap_[2], root_[2];
-  std::unique_ptr<Epetra_Import> import_[2], rootImport_[2];
-  std::unique_ptr<Epetra_Export> export_[2];
+  struct Transfers;                     // Epetra maps, Import and Export (DistributedLayout.cpp)
+  std::unique_ptr<const Transfers> transfers_;
 };
 
 }  // namespace pf

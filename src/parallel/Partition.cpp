@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "parallel/CommunicatorImpl.hpp"
+
 namespace pf {
 namespace {
 
@@ -41,10 +43,9 @@ void geometry(void* data, int, int, int num, ZOLTAN_ID_PTR gids, ZOLTAN_ID_PTR, 
 
 }  // namespace
 
-std::vector<int> partitionRcb(const std::vector<double>& coords, MPI_Comm comm) {
-  int rank = 0, size = 1;
-  MPI_Comm_rank(comm, &rank);
-  MPI_Comm_size(comm, &size);
+std::vector<int> partitionRcb(const std::vector<double>& coords, const Communicator& communicator) {
+  const MPI_Comm comm = communicator.impl().mpi;
+  const int rank = communicator.rank(), size = communicator.size();
   const int n = static_cast<int>(coords.size() / 3);
   std::vector<int> owner(n, 0);
   if (size == 1) return owner;

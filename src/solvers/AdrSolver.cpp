@@ -72,7 +72,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
         loc[0] += du * kii * du;
         loc[1] += du * du;
       }
-      model.layout().comm().SumAll(loc, glob, 2);
+      model.layout().comm().sum(loc, glob, 2);
       if (glob[0] > 0 && glob[1] > 0) c = std::min(2.0 * std::sqrt(glob[0] / glob[1]), 1.999);
       for (int k = 0; k < n; ++k) v[k] = ((2.0 - c) * v[k] + 2.0 * r[k] / lambda[k]) / (2.0 + c);
     } else {

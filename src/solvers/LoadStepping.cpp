@@ -25,7 +25,7 @@ ResidualNorms residualNorms(const Model& model, const std::vector<double>& f, co
     b2 += b[k] * b[k] * vol * vol;
   }
   double in[4] = {r2, l2, b2, rd2}, out[4];
-  model.layout().comm().SumAll(in, out, 4);
+  model.layout().comm().sum(in, out, 4);
   return {std::sqrt(out[0]), std::sqrt(out[1]) + std::sqrt(out[2]), std::sqrt(out[3])};
 }
 
@@ -39,7 +39,7 @@ void predictStep(const Model& model, double t, std::vector<double>& u, const std
       in[0] += (u[k] - before[k]) * duPrev[k];
       in[1] += duPrev[k] * duPrev[k];
     }
-  model.layout().comm().SumAll(in, out, 2);
+  model.layout().comm().sum(in, out, 2);
   const double alpha = out[1] > 0 ? out[0] / out[1] : 0.0;
   for (std::size_t k = 0; k < u.size(); ++k)
     if (!fixed[k]) u[k] += alpha * duPrev[k];

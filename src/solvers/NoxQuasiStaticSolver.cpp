@@ -18,6 +18,7 @@
 #include "LoadStepping.hpp"
 #include "core/Material.hpp"
 #include "model/Model.hpp"
+#include "parallel/CommunicatorImpl.hpp"
 
 namespace pf {
 namespace {
@@ -83,7 +84,7 @@ class TangentOperator : public Epetra_Operator, public NOX::Epetra::Interface::J
     for (double r : model.layout().family().refLength) shortest = std::min(shortest, r);
     double g = 0;
     double neg = -shortest;
-    model.layout().comm().MaxAll(&neg, &g, 1);
+    model.layout().comm().max(&neg, &g, 1);
     step_ = 1e-7 * (-g);
   }
   bool exact() const { return exact_; }
@@ -108,7 +109,7 @@ class TangentOperator : public Epetra_Operator, public NOX::Epetra::Interface::J
       } else {
         double local = 0, vmax = 0;
         for (int k = 0; k < n; ++k) local = std::max(local, std::fabs(du_[k]));
-        model_.layout().comm().MaxAll(&local, &vmax, 1);
+        model_.layout().comm().max(&local, &vmax, 1);
         if (vmax == 0) {
           std::fill(df_.begin(), df_.end(), 0.0);
         } else {
@@ -210,7 +211,7 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
         if (keep[b]) moment[1] += kr2;
       }
     }
-    L.comm().SumAll(moment, total, 2);
+    L.comm().sum(moment, total, 2);
     boost = total[1] > 0 ? total[0] / total[1] : 1.0;
   }
   auto A = Teuchos::rcp(new Epetra_CrsMatrix(Copy, map, 0));
@@ -244,7 +245,7 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
     }
   }
   double in[2] = {diagTotal, static_cast<double>(diagCount)}, out[2];
-  L.comm().SumAll(in, out, 2);
+  L.comm().sum(in, out, 2);
   const double s = out[1] > 0 ? out[0] / out[1] : 1.0;
   A->FillComplete();
   // Prescribed rows: s on the diagonal, nothing else (the constraint x = xbar decouples them).
@@ -308,16 +309,27 @@ void setDefault(Teuchos::ParameterList& l, const std::string& name, T v) {
 
 }  // namespace
 
+struct NoxQuasiStaticSolver::Linear {
+  Teuchos::RCP<Epetra_Map> map;        // owned dofs, global id 3 * point + component
+  Teuchos::RCP<Epetra_CrsMatrix> M;    // preconditioner matrix (pair stiffness)
+  Teuchos::RCP<Epetra_Operator> prec;  // its Ifpack or ML preconditioner, built once for the whole run
+};
+
+NoxQuasiStaticSolver::NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)), linear_(std::make_unique<Linear>()) {}
+
+NoxQuasiStaticSolver::~NoxQuasiStaticSolver() = default;
+
 NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::vector<double>& u, double t) {
   const int n = model.numDofs();
-  if (M_.is_null()) {  // the pair stiffness depends on the reference configuration only: build it once
+  Linear& lin = *linear_;
+  if (lin.M.is_null()) {  // the pair stiffness depends on the reference configuration only: build it once
     std::vector<int> dofGids(n);
     for (int i = 0; i < model.numOwned(); ++i)
       for (int a = 0; a < 3; ++a) dofGids[3 * i + a] = 3 * model.layout().gids()[i] + a;
-    map_ = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm()));
-    M_ = pairMatrix(model, *map_, opt_.precBondRadius, &scale_);
+    lin.map = Teuchos::rcp(new Epetra_Map(-1, n, dofGids.data(), 0, model.layout().comm().impl().epetra));
+    lin.M = pairMatrix(model, *lin.map, opt_.precBondRadius, &scale_);
   }
-  const Epetra_Map& map = *map_;
+  const Epetra_Map& map = *lin.map;
   const double scale = scale_;
 
   std::vector<double> xbar(u);  // prescribed values were set by the predictor
@@ -353,15 +365,15 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
   if (precType == "New Ifpack") {
     Teuchos::ParameterList& ifp = ls.sublist("Ifpack");
     setDefault(ifp, "fact: level-of-fill", 0);
-    if (prec_.is_null()) prec_ = factorIfpack(M_, ls.get<std::string>("Ifpack Preconditioner", "ILU"),
-                                              ls.get<int>("Overlap", 0), ifp);
+    if (lin.prec.is_null()) lin.prec = factorIfpack(lin.M, ls.get<std::string>("Ifpack Preconditioner", "ILU"),
+                                                    ls.get<int>("Overlap", 0), ifp);
   } else if (precType == "ML") {
-    if (prec_.is_null()) prec_ = buildMl(M_, ls.sublist("ML"));
+    if (lin.prec.is_null()) lin.prec = buildMl(lin.M, ls.sublist("ML"));
   }
-  Teuchos::RCP<Epetra_Operator> M = M_;
-  if (!prec_.is_null()) {
+  Teuchos::RCP<Epetra_Operator> M = lin.M;
+  if (!lin.prec.is_null()) {
     ls.set("Preconditioner", "User Defined");
-    M = prec_;
+    M = lin.prec;
   }
   Teuchos::ParameterList& search = params->sublist("Line Search");
   setDefault(search, "Method", "Polynomial");

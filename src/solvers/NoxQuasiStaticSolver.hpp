@@ -5,10 +5,7 @@
 // consistent tangent without writing one. The preconditioner (Ifpack ILU or ML) of the assembled pair
 // stiffness is built once per run. A step that fails is cut in halves up to Maximum Cuts times; a step
 // still failing is relaxed by ADR, and the fallback is logged.
-#include <Epetra_CrsMatrix.h>
-#include <Epetra_Map.h>
-#include <Teuchos_ParameterList.hpp>
-#include <Teuchos_RCP.hpp>
+#include <memory>
 
 #include "AdrSolver.hpp"
 #include "Solver.hpp"
@@ -33,9 +30,10 @@ struct NoxOptions {
 
 class NoxQuasiStaticSolver : public Solver {
  public:
-  explicit NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)) {}
+  explicit NoxQuasiStaticSolver(NoxOptions o);
   static SolverEntry entry();           // "NOXQuasiStatic"
   static SolverEntry peridigmEntry();   // Peridigm's "QuasiStatic" (Newton), served by the same engine
+  ~NoxQuasiStaticSolver() override;
   std::string name() const override { return "NOXQuasiStatic (Newton-Krylov)"; }
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
@@ -51,10 +49,9 @@ class NoxQuasiStaticSolver : public Solver {
   Outcome advance(Model& model, std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, int depth);
 
   NoxOptions opt_;
-  Teuchos::RCP<Epetra_Map> map_;       // owned dofs, global id 3 * point + component
-  Teuchos::RCP<Epetra_CrsMatrix> M_;   // preconditioner matrix (pair stiffness), built on first use
-  Teuchos::RCP<Epetra_Operator> prec_; // its Ifpack or ML preconditioner, built once for the whole run
-  double scale_ = 1.0;                 // its mean diagonal: the weight of the prescribed rows
+  struct Linear;                       // Epetra map, pair stiffness and its preconditioner (the .cpp)
+  std::unique_ptr<Linear> linear_;     // built on first use, kept for the whole run
+  double scale_ = 1.0;                 // the pair stiffness' mean diagonal: the weight of prescribed rows
 };
 
 }  // namespace pf

@@ -1,0 +1,50 @@
+#include "Communicator.hpp"
+
+#include <utility>
+
+#include "parallel/CommunicatorImpl.hpp"
+
+namespace pf {
+
+// MPI_COMM_WORLD itself, not a duplicate: Epetra_MpiComm(MPI_COMM_WORLD) was used that way before, and
+// nothing then has to be freed before MPI_Finalize.
+Communicator Communicator::world() { return Communicator(std::make_shared<const Impl>(MPI_COMM_WORLD)); }
+
+const Communicator::Impl& Communicator::impl() const { return *impl_; }
+
+int Communicator::rank() const { return impl_->epetra.MyPID(); }
+int Communicator::size() const { return impl_->epetra.NumProc(); }
+
+double Communicator::sum(double v) const {
+  double g = 0;
+  sum(&v, &g, 1);
+  return g;
+}
+
+double Communicator::max(double v) const {
+  double g = 0;
+  max(&v, &g, 1);
+  return g;
+}
+
+void Communicator::sum(const double* in, double* out, int n) const {
+  MPI_Allreduce(in, out, n, MPI_DOUBLE, MPI_SUM, impl_->mpi);
+}
+
+void Communicator::max(const double* in, double* out, int n) const {
+  MPI_Allreduce(in, out, n, MPI_DOUBLE, MPI_MAX, impl_->mpi);
+}
+
+void Communicator::barrier() const { MPI_Barrier(impl_->mpi); }
+
+MpiSession::MpiSession(int& argc, char**& argv) { MPI_Init(&argc, &argv); }
+
+MpiSession::~MpiSession() { MPI_Finalize(); }
+
+int MpiSession::rank() const {
+  int r = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &r);
+  return r;
+}
+
+}  // namespace pf

@@ -1,0 +1,42 @@
+#pragma once
+// A group of MPI ranks and the reductions the solvers and writers need, with neither mpi.h nor Epetra in
+// sight: above src/parallel, code sees ranks, sums and maxima only. Copies share one communicator. The
+// MPI run itself (init/finalize) is an MpiSession, owned by the executable's main.
+#include <memory>
+
+namespace pf {
+
+class Communicator {
+ public:
+  static Communicator world();  // every rank of the run (MPI must be initialised, see MpiSession)
+
+  int rank() const;
+  int size() const;
+  // Reductions over all ranks, every rank gets the result (MPI_Allreduce on doubles, as Epetra's
+  // SumAll/MaxAll, so results are bit-identical to theirs). in and out must not overlap.
+  double sum(double v) const;
+  double max(double v) const;
+  void sum(const double* in, double* out, int n) const;
+  void max(const double* in, double* out, int n) const;
+  void barrier() const;
+
+  struct Impl;  // defined in parallel/CommunicatorImpl.hpp (the MPI_Comm and an Epetra_MpiComm on it)
+  const Impl& impl() const;
+
+ private:
+  explicit Communicator(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+  std::shared_ptr<const Impl> impl_;
+};
+
+// MPI_Init in the constructor, MPI_Finalize in the destructor: one per process, alive while any
+// Communicator is used.
+class MpiSession {
+ public:
+  MpiSession(int& argc, char**& argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int rank() const;  // in the world communicator
+};
+
+}  // namespace pf
