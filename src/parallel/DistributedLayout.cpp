@@ -27,6 +27,49 @@ struct DistributedLayout::Transfers {
 
 DistributedLayout::~DistributedLayout() = default;
 
+namespace {
+
+// Points of other ranks inside the owned points' bounding box grown by the largest horizon (and half a
+// cell diagonal for partial volumes), in Hilbert order.
+std::vector<int> ghostCandidates(const std::vector<double>& coords, const std::vector<int>& owner, int me,
+                                 const std::vector<int>& owned, const std::vector<double>& horizon,
+                                 const std::array<double, 3>* cell, const std::vector<std::uint64_t>& key) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, hmax = 0;
+  for (int p : owned) {
+    hmax = std::max(hmax, horizon[p]);
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], coords[3 * p + d]);
+      hi[d] = std::max(hi[d], coords[3 * p + d]);
+    }
+  }
+  std::vector<int> candidates;
+  if (!owned.empty()) {
+    const double pad = (hmax + (cell ? halfCellDiagonal(*cell) : 0.0)) * (1.0 + 1e-9);
+    for (int p = 0; p < static_cast<int>(owner.size()); ++p) {
+      if (owner[p] == me) continue;
+      bool inside = true;
+      for (int d = 0; d < 3 && inside; ++d) inside = coords[3 * p + d] >= lo[d] - pad && coords[3 * p + d] <= hi[d] + pad;
+      if (inside) candidates.push_back(p);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
+  return candidates;
+}
+
+// omega of every bond from its length and its owner's horizon h. Partial-volume bonds may reach half a
+// cell beyond the horizon; omega is taken at the horizon there (omega(r > delta) is undefined for some
+// influence functions).
+void setInfluence(BondFamily& family, const std::vector<double>& h, const Influence& influence, bool partialVolume) {
+  family.influence.resize(family.numBonds());
+  for (int i = 0; i < family.numOwned(); ++i)
+    for (int b = family.offsets[i]; b < family.offsets[i + 1]; ++b)
+      family.influence[b] =
+          influenceValue(influence, partialVolume ? std::min(family.refLength[b], h[i]) : family.refLength[b], h[i]);
+  family.unitInfluence = std::all_of(family.influence.begin(), family.influence.end(), [](double w) { return w == 1.0; });
+}
+
+}  // namespace
+
 DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector<double>& coords,
                                      const std::vector<int>& owner, const std::vector<double>& horizon,
                                      const std::vector<int>& block, const Influence& influence,
@@ -45,27 +88,7 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
     return a < b;
   });
   numOwned_ = static_cast<int>(owned.size());
-
-  // Ghost candidates: points of other ranks inside the owned bounding box grown by the largest horizon.
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, hmax = 0;
-  for (int p : owned) {
-    hmax = std::max(hmax, horizon[p]);
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], coords[3 * p + d]);
-      hi[d] = std::max(hi[d], coords[3 * p + d]);
-    }
-  }
-  std::vector<int> candidates;
-  if (numOwned_ > 0) {
-    const double pad = (hmax + (cell ? halfCellDiagonal(*cell) : 0.0)) * (1.0 + 1e-9);
-    for (int p = 0; p < numGlobal_; ++p) {
-      if (owner[p] == me) continue;
-      bool inside = true;
-      for (int d = 0; d < 3 && inside; ++d) inside = coords[3 * p + d] >= lo[d] - pad && coords[3 * p + d] <= hi[d] + pad;
-      if (inside) candidates.push_back(p);
-    }
-  }
-  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
+  const std::vector<int> candidates = ghostCandidates(coords, owner, me, owned, horizon, cell, key);
 
   std::vector<double> pts;
   pts.reserve(3 * (owned.size() + candidates.size()));
@@ -74,15 +97,7 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
   buildFamilies(pts, numOwned_, h, family_, cell);
-  family_.influence.resize(family_.numBonds());
-  // Partial-volume bonds may reach half a cell beyond the horizon; omega is taken at the horizon there
-  // (omega(r > delta) is undefined for some influence functions).
-  for (int i = 0; i < numOwned_; ++i)
-    for (int b = family_.offsets[i]; b < family_.offsets[i + 1]; ++b)
-      family_.influence[b] =
-          influenceValue(influence, cell ? std::min(family_.refLength[b], h[i]) : family_.refLength[b], h[i]);
-  family_.unitInfluence =
-      std::all_of(family_.influence.begin(), family_.influence.end(), [](double w) { return w == 1.0; });
+  setInfluence(family_, h, influence, cell != nullptr);
 
   // Keep only candidates that some bond reaches; candidate order is preserved so rows stay sorted.
   std::vector<int> ghostIndex(candidates.size(), -1);
@@ -103,7 +118,10 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
     if (blocks_.empty() || blocks_.back().blockId != b) blocks_.push_back({b, i, i});
     blocks_.back().end = i + 1;
   }
+  buildTransfers();
+}
 
+void DistributedLayout::buildTransfers() {
   auto t = std::make_unique<Transfers>();
   const Epetra_MpiComm& ecomm = comm_.impl().epetra;
   for (int k = 0; k < 2; ++k) {
@@ -113,7 +131,7 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
     t->import[k].reset(new Epetra_Import(*t->overlap[k], *t->owned[k]));
     t->exporter[k].reset(new Epetra_Export(*t->overlap[k], *t->owned[k]));
     std::vector<int> all;
-    if (me == 0) {
+    if (comm_.rank() == 0) {
       all.resize(numGlobal_);
       std::iota(all.begin(), all.end(), 0);
     }

@@ -51,6 +51,7 @@ class DistributedLayout {
   double max(double v) const { return comm_.max(v); }
 
  private:
+  void buildTransfers();  // owned, overlap and rank-0 maps with their Import/Export
   Communicator comm_;
   int numOwned_ = 0, numGlobal_ = 0;
   std::vector<int> gids_;
