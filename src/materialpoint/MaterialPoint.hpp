@@ -14,8 +14,8 @@
 
 namespace pf {
 
-// Builds a registered model from plain values (as the input schema would hand them over); throws
-// InputError for an unknown model.
+// Builds a registered model from plain values, checked against its ParameterSpecs as a deck's would be
+// (unknown or missing parameters, ranges, choices; defaults filled in); throws InputError otherwise.
 std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<std::string, double>& values,
                                        const std::map<std::string, std::string>& strings = {});
 
