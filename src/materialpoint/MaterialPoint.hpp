@@ -35,6 +35,8 @@ class MaterialPoint {
   std::array<double, 9> stress() const;
   const std::vector<double>& force() const { return force_; }  // 3 per lattice point, centre first
   int numBonds() const { return static_cast<int>(family_.numBonds()); }
+  const FamilyView& view() const { return view_; }  // the centre's family (tests compute lattice sums on it)
+  double nodeVolume() const { return volume_[0]; }
   double weightedVolume() const { return m_[0]; }
   StateStore& state() { return state_; }
 
