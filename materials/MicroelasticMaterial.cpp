@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "core/InputError.hpp"
@@ -36,6 +37,12 @@ double continuumMoment(Dimension dim, double delta, double h) {
   return h * 2.0 * kPi * std::pow(delta, 3) / 3.0;
 }
 
+std::string number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
 double bondInfluence(const FamilyView& fam, int b) { return fam.unitInfluence ? 1.0 : fam.influence[b]; }
 double bondFraction(const FamilyView& fam, int b) { return fam.fraction ? fam.fraction[b] : 1.0; }
 
@@ -53,7 +60,7 @@ MicroelasticMaterial::MicroelasticMaterial(const MaterialInput& in)
   // A bond-based solid's Poisson's ratio is fixed; a deck may state it, but only as that value (to 1e-3,
   // so that 0.333 passes for 1/3).
   if (in.has("Poisson's Ratio") && std::fabs(in.get("Poisson's Ratio") - nu) > 1e-3)
-    throw InputError(where + ": 'Poisson's Ratio' = " + std::to_string(in.get("Poisson's Ratio")) +
+    throw InputError(where + ": 'Poisson's Ratio' = " + number(in.get("Poisson's Ratio")) +
                      ", but a bond-based solid has nu = " + (nu == 0.25 ? "1/4" : "1/3") + " in " + toString(dim_) +
                      " (omit it or give that value)");
 }
