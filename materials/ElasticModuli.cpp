@@ -40,12 +40,11 @@ ElasticModuli elasticModuliFrom(const MaterialInput& in) {
   m.poisson = (3 * m.bulk - 2 * m.shear) / (2 * (3 * m.bulk + m.shear));
   if (!(m.bulk > 0) || !(m.shear > 0) || !std::isfinite(m.bulk) || !std::isfinite(m.shear))
     throw InputError(where + ": elastic constants give a non-positive bulk or shear modulus");
-  if (!(in.get("Density") > 0)) throw InputError(where + ": 'Density' must be positive");
   return m;
 }
 
 Dimension dimensionFrom(const MaterialInput& in, double* thickness) {
-  const bool ps = in.get("Plane Stress", 0.0) != 0.0, pe = in.get("Plane Strain", 0.0) != 0.0;
+  const bool ps = in.flag("Plane Stress"), pe = in.flag("Plane Strain");
   const std::string where = in.inputFile + ": material '" + in.name + "'";
   if (ps && pe) throw InputError(where + ": 'Plane Stress' and 'Plane Strain' are both true");
   if (!ps && !pe) {
@@ -53,8 +52,8 @@ Dimension dimensionFrom(const MaterialInput& in, double* thickness) {
     *thickness = 0.0;
     return Dimension::ThreeD;
   }
-  *thickness = in.get("Thickness");
-  if (!(*thickness > 0)) throw InputError(where + ": 'Thickness' must be positive");
+  if (!in.has("Thickness")) throw InputError(where + ": 'Thickness' is needed by Plane Stress / Plane Strain");
+  *thickness = in.get("Thickness");  // > 0: its spec's range
   return ps ? Dimension::PlaneStress : Dimension::PlaneStrain;
 }
 

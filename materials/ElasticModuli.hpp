@@ -12,10 +12,12 @@ struct ElasticModuli {
   double bulk = 0, shear = 0, young = 0, poisson = 0;
 };
 
-// Throws InputError naming the material and file unless exactly two moduli are given and admissible.
+// Throws InputError naming the material and file unless exactly two moduli are given and they make a
+// positive bulk and shear modulus (each one's own range is its ParameterSpec's, checked by the input).
 ElasticModuli elasticModuliFrom(const MaterialInput& in);
 
-// Dimension from the "Plane Stress"/"Plane Strain" flags; thickness required (and > 0) when planar.
+// Dimension from the "Plane Stress"/"Plane Strain" flags (not both); Thickness required when planar and
+// refused in 3D (its range, > 0, is its spec's).
 Dimension dimensionFrom(const MaterialInput& in, double* thickness);
 
 }  // namespace pf

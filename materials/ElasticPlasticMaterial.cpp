@@ -6,47 +6,30 @@
 
 namespace pf {
 
-namespace {
-
-double nonNegative(const MaterialInput& in, const std::string& key) {
-  const double v = in.get(key, 0.0);
-  if (!(v >= 0.0))
-    throw InputError(in.inputFile + ": material '" + in.name + "': '" + key + "' must be >= 0");
-  return v;
-}
-
-}  // namespace
-
 ElasticPlasticMaterial::ElasticPlasticMaterial(const MaterialInput& in, bool hardening)
     : moduli_(elasticModuliFrom(in)), density_(in.get("Density")) {
   params_.dim = dimensionFrom(in, &params_.thickness);
   params_.osb = osbConstants(params_.dim, moduli_);
-  const std::string where = in.inputFile + ": material '" + in.name + "'";
-  params_.yieldStress = in.get("Yield Stress");
-  if (!(params_.yieldStress > 0.0)) throw InputError(where + ": 'Yield Stress' must be positive");
+  params_.yieldStress = in.get("Yield Stress");  // > 0: its spec's range, as every range below
   if (hardening) {
     if (in.has("Hardening Modulus") && in.has("Isotropic Hardening Modulus"))
-      throw InputError(where + ": give 'Isotropic Hardening Modulus' or 'Hardening Modulus' (Peridigm's name "
-                               "for it), not both");
-    params_.isoHardening = in.has("Hardening Modulus") ? nonNegative(in, "Hardening Modulus")
-                                                       : nonNegative(in, "Isotropic Hardening Modulus");
-    params_.kinHardening = nonNegative(in, "Kinematic Hardening Modulus");
+      throw InputError(in.inputFile + ": material '" + in.name + "': give 'Isotropic Hardening Modulus' or "
+                       "'Hardening Modulus' (Peridigm's name for it), not both");
+    params_.isoHardening = in.get(in.has("Hardening Modulus") ? "Hardening Modulus" : "Isotropic Hardening Modulus");
+    params_.kinHardening = in.get("Kinematic Hardening Modulus");
   }
-  auto it = in.strings.find("Yield Normalization");
-  if (it != in.strings.end()) {
-    if (it->second == "Discrete") params_.norm = YieldNormalization::Discrete;
-    else if (it->second == "Continuum") params_.norm = YieldNormalization::Continuum;
-    else throw InputError(where + ": 'Yield Normalization' = '" + it->second + "' is not 'Discrete' or 'Continuum'");
-  }
+  params_.norm = in.text("Yield Normalization") == "Continuum" ? YieldNormalization::Continuum
+                                                                : YieldNormalization::Discrete;
 }
 
 std::vector<ParameterSpec> ElasticPlasticMaterial::parameters() {
-  using K = ParameterSpec::Kind;
   std::vector<ParameterSpec> params = elasticSolidParameters();
-  params.push_back({"Yield Stress", K::Double, true, "initial uniaxial yield stress sigma_y0 [Pa]"});
-  params.push_back({"Yield Normalization", K::String, false,
-                    "'Discrete' (default: yield constants from the node's weighted volume m) or 'Continuum' "
-                    "(the paper's 4 pi delta^5/5, pi h delta^4/2)"});
+  params.push_back(ParameterSpec::real("Yield Stress", "initial uniaxial yield stress sigma_y0 [Pa]").need().positive());
+  params.push_back(ParameterSpec::text("Yield Normalization",
+                                       "'Discrete': yield constants from the node's weighted volume m; 'Continuum': "
+                                       "the paper's 4 pi delta^5/5, pi h delta^4/2")
+                       .oneOf({"Discrete", "Continuum"})
+                       .byDefault("Discrete"));
   return params;
 }
 

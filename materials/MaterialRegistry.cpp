@@ -5,6 +5,7 @@
 #include "ElasticMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
 #include "HardeningPlasticity.hpp"
+#include "MicroelasticMaterial.hpp"
 
 namespace pf {
 
@@ -13,6 +14,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticMaterial::entry(),
       ElasticPlasticMaterial::entry(),
       HardeningPlasticity::entry(),
+      MicroelasticMaterial::entry(),
   };
   return entries;
 }

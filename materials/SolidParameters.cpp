@@ -3,20 +3,22 @@
 namespace pf {
 
 std::vector<ParameterSpec> elasticSolidParameters() {
-  using K = ParameterSpec::Kind;
+  using P = ParameterSpec;
+  // Ranges the input layer enforces; which two moduli are given, and whether they make a positive bulk
+  // and shear modulus, is checked where they are combined (elasticModuliFrom).
   return {
-      {"Density", K::Double, true, "mass density [kg/m^3]"},
-      {"Bulk Modulus", K::Double, false, "give exactly two of the four elastic constants"},
-      {"Shear Modulus", K::Double, false, ""},
-      {"Young's Modulus", K::Double, false, ""},
-      {"Poisson's Ratio", K::Double, false, ""},
-      {"Plane Stress", K::Bool, false, "2D plane-stress model (points in z = 0, needs Thickness)"},
-      {"Plane Strain", K::Bool, false, "2D plane-strain model (points in z = 0, needs Thickness)"},
-      {"Thickness", K::Double, false, "out-of-plane thickness of a 2D model [m]"},
+      P::real("Density", "mass density [kg/m^3]").need().positive(),
+      P::real("Bulk Modulus", "give exactly two of the four elastic constants").positive(),
+      P::real("Shear Modulus").positive(),
+      P::real("Young's Modulus").positive(),
+      P::real("Poisson's Ratio").above(-1.0).below(0.5),
+      P::flag("Plane Stress", "2D plane-stress model (points in z = 0, needs Thickness)").byDefault("false"),
+      P::flag("Plane Strain", "2D plane-strain model (points in z = 0, needs Thickness)").byDefault("false"),
+      P::real("Thickness", "out-of-plane thickness of a 2D model [m]").positive(),
       // Peridigm options accepted for deck compatibility; Periforge's tangent is analytic and its
       // influence function is set under Discretization, so these change nothing.
-      {"Apply Automatic Differentiation Jacobian", K::Bool, false, "accepted, ignored (Peridigm)"},
-      {"Apply Shear Correction Factor", K::Bool, false, "accepted; only false is supported"},
+      P::flag("Apply Automatic Differentiation Jacobian", "accepted, ignored (Peridigm)").byDefault("false"),
+      P::flag("Apply Shear Correction Factor", "accepted; only false is supported").byDefault("false"),
   };
 }
 

@@ -36,6 +36,7 @@ ParameterSpec ParameterSpec::byDefault(std::string v) const { ParameterSpec s = 
 ParameterSpec ParameterSpec::positive() const { ParameterSpec s = *this; s.min = 0; s.minExclusive = true; return s; }
 ParameterSpec ParameterSpec::nonNegative() const { ParameterSpec s = *this; s.min = 0; s.minExclusive = false; return s; }
 ParameterSpec ParameterSpec::atLeast(double v) const { ParameterSpec s = *this; s.min = v; s.minExclusive = false; return s; }
+ParameterSpec ParameterSpec::above(double v) const { ParameterSpec s = *this; s.min = v; s.minExclusive = true; return s; }
 ParameterSpec ParameterSpec::below(double v) const { ParameterSpec s = *this; s.max = v; s.maxExclusive = true; return s; }
 ParameterSpec ParameterSpec::oneOf(std::vector<std::string> v) const { ParameterSpec s = *this; s.choices = std::move(v); return s; }
 
@@ -66,6 +67,39 @@ const char* kindName(ParameterSpec::Kind k) {
     case ParameterSpec::Kind::Scalar: return "string or number";
   }
   return "?";
+}
+
+void applySpecs(const std::vector<ParameterSpec>& specs, ParameterValues& in) {
+  auto fail = [&](const std::string& msg) { throw InputError(in.where() + ": " + msg); };
+  auto declared = [&](const std::string& key) {
+    for (const ParameterSpec& s : specs)
+      if (s.name == key) return true;
+    return key == "Material Model";  // every material list names its model
+  };
+  for (const auto& v : in.values)
+    if (!declared(v.first)) fail("unknown parameter '" + v.first + "'");
+  for (const auto& v : in.strings)
+    if (!declared(v.first)) fail("unknown parameter '" + v.first + "'");
+  for (const ParameterSpec& s : specs) {
+    if (!in.has(s.name)) {
+      if (s.required) fail("missing required parameter '" + s.name + "'");
+      if (!s.defaultValue.empty()) in.defaults[s.name] = s.defaultValue;
+      continue;
+    }
+    auto v = in.values.find(s.name);
+    if (v != in.values.end() && s.kind != ParameterSpec::Kind::Bool) {
+      const std::string why = s.rangeError(v->second);
+      if (!why.empty()) fail("'" + s.name + "' " + why);
+    }
+    auto t = in.strings.find(s.name);
+    if (!s.choices.empty() && t != in.strings.end()) {
+      std::string names;
+      for (const std::string& c : s.choices) names += (names.empty() ? "'" : ", '") + c + "'";
+      bool ok = false;
+      for (const std::string& c : s.choices) ok = ok || c == t->second;
+      if (!ok) fail("'" + s.name + "' = '" + t->second + "' is not one of " + names);
+    }
+  }
 }
 
 double ParameterValues::get(const std::string& key) const {

@@ -32,6 +32,7 @@ struct ParameterSpec {
   ParameterSpec positive() const;                      // > 0
   ParameterSpec nonNegative() const;                   // >= 0
   ParameterSpec atLeast(double v) const;               // >= v
+  ParameterSpec above(double v) const;                 // > v
   ParameterSpec below(double v) const;                 // < v
   ParameterSpec oneOf(std::vector<std::string> values) const;
 
@@ -42,6 +43,13 @@ struct ParameterSpec {
 };
 
 const char* kindName(ParameterSpec::Kind k);
+
+struct ParameterValues;
+
+// What the input layer does for a deck's list, for values that come from elsewhere (the material-point
+// driver, tests): rejects unknown names, missing required ones, values outside a range or not among the
+// choices (InputError naming in.where() and the parameter), and fills in.defaults. Types are the caller's.
+void applySpecs(const std::vector<ParameterSpec>& specs, ParameterValues& in);
 
 // Validated values of one parameter list, converted to plain types (bools as 0/1, ints as doubles).
 // has() is true only for what the deck gave; get() falls back to the spec's default.

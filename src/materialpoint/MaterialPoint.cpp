@@ -15,9 +15,11 @@ std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<
   MaterialInput in;
   in.name = model;
   in.inputFile = "(material point)";
+  in.path = "Materials/" + model;
   in.values = values;
   in.strings = strings;
   in.strings["Material Model"] = model;
+  applySpecs(entry->parameters, in);  // ranges, choices and defaults, as the input layer does for a deck
   return entry->create(in);
 }
 

@@ -14,8 +14,8 @@
 
 namespace pf {
 
-// Builds a registered model from plain values (as the input schema would hand them over); throws
-// InputError for an unknown model.
+// Builds a registered model from plain values, checked against its ParameterSpecs as a deck's would be
+// (unknown or missing parameters, ranges, choices; defaults filled in); throws InputError otherwise.
 std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<std::string, double>& values,
                                        const std::map<std::string, std::string>& strings = {});
 
@@ -35,6 +35,8 @@ class MaterialPoint {
   std::array<double, 9> stress() const;
   const std::vector<double>& force() const { return force_; }  // 3 per lattice point, centre first
   int numBonds() const { return static_cast<int>(family_.numBonds()); }
+  const FamilyView& view() const { return view_; }  // the centre's family (tests compute lattice sums on it)
+  double nodeVolume() const { return volume_[0]; }
   double weightedVolume() const { return m_[0]; }
   StateStore& state() { return state_; }
 

@@ -84,6 +84,7 @@ inline std::unique_ptr<pf::ElasticMaterial> makeElastic(pf::Dimension dim, doubl
   if (dim == pf::Dimension::PlaneStress) in.values["Plane Stress"] = 1.0;
   if (dim == pf::Dimension::PlaneStrain) in.values["Plane Strain"] = 1.0;
   if (dim != pf::Dimension::ThreeD) in.values["Thickness"] = thickness;
+  pf::applySpecs(pf::ElasticMaterial::entry().parameters, in);  // the spec defaults the input layer fills
   return std::unique_ptr<pf::ElasticMaterial>(new pf::ElasticMaterial(in));
 }
 
