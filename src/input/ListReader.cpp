@@ -91,19 +91,7 @@ ParameterValues readList(const PL& l, const std::vector<ParameterSpec>& specs, c
     else
       in.values[name] = getNumber(l, name);
   }
-  for (const ParameterSpec& s : specs) {
-    if (!in.has(s.name)) {
-      if (!s.defaultValue.empty()) in.defaults[s.name] = s.defaultValue;
-      continue;
-    }
-    if (in.values.count(s.name) && s.kind != ParameterSpec::Kind::Bool) {
-      const std::string why = s.rangeError(in.values.at(s.name));
-      if (!why.empty()) fail(file, path, "'" + s.name + "' " + why);
-    }
-    if (!s.choices.empty() && in.strings.count(s.name) &&
-        std::find(s.choices.begin(), s.choices.end(), in.strings.at(s.name)) == s.choices.end())
-      fail(file, path, "'" + s.name + "' = '" + in.strings.at(s.name) + "' is not one of " + joinNames(s.choices));
-  }
+  applySpecs(specs, in);  // ranges, choices and defaults
   return in;
 }
 
