@@ -64,6 +64,7 @@ struct OsbJ2Return {
   OsbJ2Status status;    // not Ok: the other fields are incomplete and must not be stored
 };
 
+// Out of line for tests and other callers; the J2 kernel inlines the same body (OsbPlasticKernels.cpp).
 OsbJ2Return osbJ2ReturnMapping(const OsbTrialMoments& trial, const OsbJ2NodeState& committed,
                                const OsbJ2Constants& k);
 
