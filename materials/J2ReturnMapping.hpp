@@ -1,9 +1,7 @@
 #pragma once
-// Per-node return mapping of the ordinary state-based J2 solid with linear isotropic (K) and kinematic (H)
-// hardening (Pirzadeh et al. 2024 §3.2, Eqs. 39-57; docs/materials.md for the 2D deviations). Contract:
-// from the family moments of the trial deviatoric force state, the committed node state and constants it
-// returns dlambda, how each part of t^d scales and the updated node state; no bonds, no allocation, no
-// throw (a failure is a status). The bond loop applies the result to the bonds (OsbPlasticKernels.cpp).
+// Per-node return mapping of the OSB J2 solid with linear isotropic (K) and kinematic (H) hardening
+// (Pirzadeh et al. 2024 §3.2, Eqs. 39-57): trial moments, committed node state and constants in; dlambda,
+// the scaling of each part of t^d and the updated state out. No bonds, allocation or throw (a failure is a status).
 #include "core/Dimension.hpp"
 
 namespace pf {
