@@ -148,6 +148,25 @@ PF_KERNEL_CLONES void osbElasticDilatationAndForce(const FamilyView& fam, const 
   osb::storeForces(fam, rec, force);
 }
 
+void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const double* y, const double* theta,
+                      double* energy) {
+  const double kappa = em.bulk, alpha = 15.0 * em.shear;
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const double* yi = y + 3 * i;
+    double sum = 0.0;
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      const int j = fam.neighbors[b];
+      const double d0 = y[3 * j] - yi[0], d1 = y[3 * j + 1] - yi[1], d2 = y[3 * j + 2] - yi[2];
+      const double xi = fam.refLength[b];
+      const double ed = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2) - xi - theta[i] * xi / 3.0;
+      const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
+      sum += fam.influence[b] * ed * ed * vj;
+    }
+    const double W = 0.5 * kappa * theta[i] * theta[i] + 0.5 * alpha / fam.weightedVolume[i] * sum;
+    energy[i] = W * fam.volume[i];
+  }
+}
+
 void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, const double* y, const double* dy,
                                double* dforce) {
   const double* V = fam.volume;

@@ -1,8 +1,8 @@
 #pragma once
-// Return mapping of the ordinary state-based J2 solid with linear isotropic (K) and kinematic (H)
-// hardening (Pirzadeh et al. 2024 §3.2; Mitchell 2011 when K = H = 0) in 3D, plane stress and plane
-// strain. One pass per node over its bonds, no allocation; the derivation and the deviations from the
-// paper (2D constants, plane-strain dilatation, plane-stress flow) are in docs/materials.md.
+// Bond loop of the OSB J2 solid with linear isotropic (K) and kinematic (H) hardening (Pirzadeh et al. 2024
+// §3.2; Mitchell 2011 when K = H = 0) in 3D, plane stress and plane strain: gathers each family, calls the
+// per-node return mapping (J2ReturnMapping.hpp) and scatters the force; no allocation. Derivation and the
+// deviations from the paper (2D constants, plane-strain dilatation, plane-stress flow): docs/materials.md.
 #include "core/BondFamily.hpp"
 #include "core/Dimension.hpp"
 #include "OsbConstants.hpp"
