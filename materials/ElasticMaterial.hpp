@@ -31,8 +31,8 @@ class ElasticMaterial : public Material {
 
  private:
   ElasticModuli moduli_;
+  double thickness_ = 0.0;  // before dim_: dim_'s initialiser (dimensionFrom) writes it
   Dimension dim_;
-  double thickness_ = 0.0;
   double density_;
   OsbConstants osb_;
   mutable bool energyWanted_ = false;  // set by enableOutput("Stored_Elastic_Energy") before the run
