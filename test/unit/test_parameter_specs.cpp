@@ -129,8 +129,9 @@ TEST(SolverRegistry, EveryEntryIsUniqueDocumentedAndBuildsFromItsDefaults) {
       EXPECT_FALSE(s.required && !s.defaultValue.empty()) << e.name << ": '" << s.name << "' is required and has a default";
       if (!s.defaultValue.empty()) {
         v.defaults[s.name] = s.defaultValue;
-        if (s.kind != S::Kind::Bool && s.kind != S::Kind::String)
+        if (s.kind != S::Kind::Bool && s.kind != S::Kind::String) {
           EXPECT_EQ(s.rangeError(std::strtod(s.defaultValue.c_str(), nullptr)), "") << e.name << ": " << s.name;
+        }
       }
       if (s.required) v.values[s.name] = 1.0;
     }
