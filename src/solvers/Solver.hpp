@@ -37,6 +37,9 @@ class Solver {
  public:
   virtual ~Solver() = default;
   virtual std::string name() const = 0;
+  // Checks the options against the built model before any output file is opened: InputError for a
+  // setting the model cannot run (every rank reaches the same verdict), warnings for doubtful ones.
+  virtual void check(const Model&) const {}
   // u, v hold the initial state on entry (prescribed values are applied by the solver); on return they
   // hold the final state, from which a following solver (Peridigm's Solver2 after Solver1) continues.
   // times: the start time, then the end of every load step (quasi-static solvers step through them all;
