@@ -1,8 +1,8 @@
 #pragma once
 // A time or load-step integrator over a Model. Solvers know nothing of materials, files or output: they
 // advance (u, v) from t0 to t1 and report each completed step to an observer, which decides what to
-// write. A step is reported only after it has converged; a step that cannot converge throws
-// SolverFailure, so nothing non-converged is ever presented as a result.
+// write. A step is reported only after it has converged and its state is finite; otherwise the solver
+// throws SolverFailure (on every rank), so nothing non-converged or non-finite is presented as a result.
 #include <stdexcept>
 #include <string>
 #include <vector>
