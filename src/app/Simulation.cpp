@@ -32,6 +32,22 @@ int fail(int rank, const std::string& kind, const std::string& what) {
   return 1;
 }
 
+// u, v from the initial conditions at t0. Every condition the solvers evaluate at t0 must be finite there:
+// an inf or nan start would otherwise surface steps later as an unexplained non-finite state.
+void initialState(const Problem& problem, double t0, std::vector<double>& u, std::vector<double>& v) {
+  const Model& model = *problem.model;
+  const std::vector<double>& x = model.coordinates();
+  model.requireFiniteLoads(t0);
+  for (const NodalLoad& l : problem.initialDisplacements) {
+    requireFiniteLoad(model, l, t0);
+    for (int i : l.nodes) u[3 * i + l.coordinate] = (*l.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t0);
+  }
+  for (const NodalLoad& l : problem.initialVelocities) {
+    requireFiniteLoad(model, l, t0);
+    for (int i : l.nodes) v[3 * i + l.coordinate] = (*l.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t0);
+  }
+}
+
 }  // namespace
 
 int runSimulation(const std::string& inputFile) {
@@ -54,18 +70,12 @@ int runSimulation(const std::string& inputFile) {
       std::printf("periforge: %s: %d points, %.0f bonds, %d rank(s), set-up %.2f s, solver %s\n", inputFile.c_str(),
                   model.layout().numGlobal(), bonds, comm.size(), setup, solvers.front()->name().c_str());
 
-    OutputFanout output;
-    for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
     const double t0 = deck.solvers.front().times.front();
     std::vector<double> u(model.numDofs(), 0.0), v(model.numDofs(), 0.0);
-    for (const NodalLoad& l : problem.initialDisplacements) {
-      const std::vector<double>& x = model.coordinates();
-      for (int i : l.nodes) u[3 * i + l.coordinate] = (*l.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t0);
-    }
-    for (const NodalLoad& l : problem.initialVelocities) {
-      const std::vector<double>& x = model.coordinates();
-      for (int i : l.nodes) v[3 * i + l.coordinate] = (*l.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t0);
-    }
+    initialState(problem, t0, u, v);  // before any output file is opened
+    for (const auto& s : solvers) s->check(model);
+    OutputFanout output;
+    for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
     for (std::size_t k = 0; k < solvers.size(); ++k) {
       if (rank == 0 && solvers.size() > 1)
         std::printf("periforge: %s: solver %s\n", deck.solvers[k].listName.c_str(), solvers[k]->name().c_str());

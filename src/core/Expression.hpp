@@ -25,6 +25,7 @@ class Expression {
   // False if x, y and z never appear: callers may then evaluate once per time for all nodes.
   bool dependsOnSpace() const { return dependsOnSpace_; }
   const std::string& text() const { return text_; }
+  const std::string& context() const { return context_; }
 
  private:
   std::string text_, context_;

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "DuplicatePoints.hpp"
 #include "core/InputError.hpp"
 
 namespace pf {
@@ -194,6 +195,7 @@ PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& i
   c.influence = d.influence;
   c.partialVolume = d.partialVolume;
   if (c.size() == 0) fail(inputFile, "Discretization", "the discretization has no points (holes cover everything)");
+  requireDistinctPoints(c, inputFile);
   return c;
 }
 

@@ -1,8 +1,11 @@
 #include "Model.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "core/Expression.hpp"
+#include "core/InputError.hpp"
 
 namespace pf {
 
@@ -107,6 +110,35 @@ void Model::applyPrescribed(double t, double* u) const {
 void Model::bodyForce(double t, double* b) const {
   std::fill(b, b + numDofs(), 0.0);
   for (const NodalLoad& l : bodyForces_) evaluate(l, x_, t, [b](int k, double v) { b[k] += v; });
+}
+
+void Model::requireFiniteLoads(double t) const {
+  for (const NodalLoad& l : prescribedLoads_) requireFiniteLoad(*this, l, t);
+  for (const NodalLoad& l : bodyForces_) requireFiniteLoad(*this, l, t);
+}
+
+void requireFiniteLoad(const Model& model, const NodalLoad& load, double t) {
+  const std::vector<double>& x = model.coordinates();
+  const std::vector<int>& gids = model.layout().gids();
+  int bad = -1;  // the owned node with the smallest global id whose value is not finite
+  double value = 0.0;
+  evaluate(load, x, t, [&](int k, double v) {
+    if (!std::isfinite(v) && (bad < 0 || gids[k / 3] < gids[bad])) bad = k / 3, value = v;
+  });
+  // Every rank must agree: the smallest failing global id over ranks (as a max of -id), its owner's data.
+  const double big = 1e300;
+  const double worst = model.max(bad >= 0 ? -static_cast<double>(gids[bad]) : -big);
+  if (worst == -big) return;
+  double in[4] = {0, 0, 0, 0}, out[4];
+  if (bad >= 0 && -static_cast<double>(gids[bad]) == worst) {
+    for (int d = 0; d < 3; ++d) in[d] = x[3 * bad + d];
+    in[3] = std::isnan(value) ? 0.0 : (value > 0 ? 1.0 : -1.0);
+  }
+  model.layout().comm().sum(in, out, 4);
+  char where[200];
+  std::snprintf(where, sizeof where, " is %s at (x, y, z, t) = (%g, %g, %g, %g)",
+                out[3] == 0 ? "nan" : (out[3] > 0 ? "inf" : "-inf"), out[0], out[1], out[2], t);
+  throw InputError(load.value->context() + ": '" + load.value->text() + "'" + where);
 }
 
 }  // namespace pf

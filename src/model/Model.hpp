@@ -31,6 +31,12 @@ struct NodalLoad {
   std::shared_ptr<const Expression> value;
 };
 
+class Model;
+
+// Collective: throws InputError naming the load's condition (its expression context) and where it failed
+// if its value at t is not finite at any of its nodes on any rank.
+void requireFiniteLoad(const Model& model, const NodalLoad& load, double t);
+
 class Model {
  public:
   Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> overlapCoords, std::vector<double> overlapVolume,
@@ -67,6 +73,9 @@ class Model {
   void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
+  // Collective: throws InputError naming the condition if a prescribed displacement or body force is not
+  // finite at t at any of its nodes (checked once, at the start time: the stepping loop stays unchecked).
+  void requireFiniteLoads(double t) const;
 
   double sum(double v) const { return layout_->sum(v); }
   double max(double v) const { return layout_->max(v); }

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <set>
 #include <unordered_map>
 
 #include "core/InputError.hpp"
+#include "core/Log.hpp"
 #include "core/MaterialEntry.hpp"
 #include "discretization/NodeSets.hpp"
 #include "parallel/Partition.hpp"
@@ -43,6 +45,35 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
   return blocks;
 }
 
+// A horizon below the grid spacing reaches no neighbour: every point of the block would have no bond.
+void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
+  if (cloud.spacing <= 0) return;  // not a uniform grid: the spacing is unknown
+  for (const BlockGroupSpec& g : deck.blocks)
+    if (g.horizon < cloud.spacing) {
+      char msg[200];
+      std::snprintf(msg, sizeof msg, ": Horizon = %g is smaller than the grid spacing %g: no point would have a bond",
+                    g.horizon, cloud.spacing);
+      throw InputError(deck.file + ": Blocks/" + g.name + msg);
+    }
+}
+
+// Points without bonds carry no force and make the stiffness singular: one line, with the first of them.
+void warnPointsWithoutBonds(const Model& model, const std::string& inputFile) {
+  double count = 0, first = -1e300;  // first: -(smallest 1-based id), reduced as a max
+  for (int i = 0; i < model.numOwned(); ++i)
+    if (model.numNeighbors(i) == 0) {
+      ++count;
+      first = std::max(first, -static_cast<double>(model.layout().gids()[i] + 1));
+    }
+  count = model.sum(count);
+  first = model.max(first);
+  if (count == 0) return;
+  char msg[200];
+  std::snprintf(msg, sizeof msg, ": %.0f point(s) have no bonds (first: point %.0f); they carry no load", count,
+                -first);
+  warn(inputFile + msg);
+}
+
 }  // namespace
 
 Problem buildProblem(const Deck& deck, const Communicator& comm) {
@@ -51,6 +82,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   pb.cloud = buildDiscretization(deck.discretization, inputFile);
   const PointCloud& cloud = pb.cloud;
   if (cloud.size() == 0) throw InputError(inputFile + ": Discretization produced no points");
+  requireHorizonsReachNeighbours(deck, cloud);
   const std::map<int, BlockSpec> blocks = blockSpecs(deck, cloud);
 
   // Every point needs a block; planar materials need a planar cloud and vice versa.
@@ -90,6 +122,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   std::unordered_map<int, int> localOf;
   for (int i = 0; i < numOwned; ++i) localOf[gids[i]] = i;
   pb.model = std::make_unique<Model>(std::move(layout), std::move(x), std::move(volume), std::move(blockModels));
+  warnPointsWithoutBonds(*pb.model, inputFile);
 
   // Node sets and boundary conditions.
   pb.nodeSets = resolveNodeSets(deck.nodeSets, cloud, inputFile);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "FiniteCheck.hpp"
 #include "LoadStepping.hpp"
 #include "model/Model.hpp"
 
@@ -33,8 +34,25 @@ SolverEntry AdrSolver::entry() {
   return e;
 }
 
+namespace {
+
+// A NaN residual never converges: stop at once (naming the node) instead of iterating to the limit.
+// The norms are reduced already, so every rank takes the same branch.
+void requireFiniteResidual(Model& model, const ResidualNorms& nr, long step, double t, const std::vector<double>& f,
+                           const std::vector<double>& b) {
+  if (std::isfinite(nr.residual) && std::isfinite(nr.load)) return;
+  const std::vector<char>& fixed = model.prescribedMask();
+  std::vector<double> r(f.size());
+  for (std::size_t k = 0; k < f.size(); ++k) r[k] = fixed[k] ? f[k] : f[k] + b[k];
+  model.rollback();
+  requireFinite(model, CheckPoint{"adaptive dynamic relaxation", step, t}, "residual", r, finiteProbe(r));
+  requireFinite(model, CheckPoint{"adaptive dynamic relaxation", step, t}, "residual", r, NAN);  // norm overflow
+}
+
+}  // namespace
+
 AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, double t,
-                                       const std::vector<double>& uStart) const {
+                                       const std::vector<double>& uStart, long step) const {
   const int n = model.numDofs();
   const bool root = model.layout().rank() == 0;
   const std::vector<char>& fixed = model.prescribedMask();
@@ -45,6 +63,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
   model.bodyForce(t, b.data());
   model.internalForce(u.data(), f.data());
   ResidualNorms nr = residualNorms(model, f, b);
+  requireFiniteResidual(model, nr, step, t, f, b);
   double tol = 0;
   int it = 0;
   for (;; ++it) {
@@ -82,6 +101,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
     rOld = r;
     model.internalForce(u.data(), f.data());
     nr = residualNorms(model, f, b);
+    requireFiniteResidual(model, nr, step, t, f, b);
     if (opt_.verbose && root) std::printf("  ADR it %d  residual %.6e  damping %.4f\n", it + 1, nr.residual, c);
   }
   return {it, nr.residual, tol};
@@ -89,12 +109,13 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
 
 void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                     StepObserver& observer) {
+  long step = 0;
   runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double, double t) {
                  const std::vector<double> uStepStart(u);
                  predictStep(model, t, u, duPrev);
                  // relax's last force evaluation was at the converged u, so the trial state is that of u
-                 const StepResult r = relax(model, u, t, uStepStart);
+                 const StepResult r = relax(model, u, t, uStepStart, ++step);
                  model.commit();
                  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uStepStart[k];
                  return StepStats{r.iterations, -1, r.residual, r.tolerance};

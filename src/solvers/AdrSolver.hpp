@@ -27,12 +27,14 @@ class AdrSolver : public Solver {
 
   // Relaxes u (prescribed values at t already set, free ones predicted) to equilibrium at time t.
   // uStepStart: the converged state the step started from (the damping estimate works on u - uStepStart).
-  // Writes trial state only; throws SolverFailure after Maximum Iterations (state rolled back).
+  // Writes trial state only; throws SolverFailure after Maximum Iterations or at the first non-finite
+  // residual (state rolled back). step: the load step, for messages.
   struct StepResult {
     int iterations;
     double residual, tolerance;
   };
-  StepResult relax(Model& model, std::vector<double>& u, double t, const std::vector<double>& uStepStart) const;
+  StepResult relax(Model& model, std::vector<double>& u, double t, const std::vector<double>& uStepStart,
+                   long step) const;
 
  private:
   AdrOptions opt_;

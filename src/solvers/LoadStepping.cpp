@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "FiniteCheck.hpp"
 #include "model/Model.hpp"
 #include "Solver.hpp"
 
@@ -57,13 +58,19 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
   model.applyPrescribed(t0, u.data());
   model.internalForce(u.data(), f.data());
   std::fill(v.begin(), v.end(), 0.0);
+  requireFiniteState(model, CheckPoint{"quasi-static", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(f));
   observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
   for (int step = 1; step <= steps; ++step) {
     const auto start = Clock::now();
     const double tA = times[step - 1], tB = times[step], dt = tB - tA;
     const StepStats s = solveStep(u, duPrev, tA, tB);
     model.internalForce(u.data(), f.data());  // f for output; the state is committed already
-    for (int k = 0; k < n; ++k) v[k] = duPrev[k] / dt;
+    double probe = 0.0;  // non-finite iff some u, v or f is: nothing non-finite is reported
+    for (int k = 0; k < n; ++k) {
+      v[k] = duPrev[k] / dt;
+      probe += u[k] + v[k] + f[k];
+    }
+    requireFiniteState(model, CheckPoint{"quasi-static", step, tB}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     if (root) {
       if (s.linearIterations >= 0)

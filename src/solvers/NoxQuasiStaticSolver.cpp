@@ -353,7 +353,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
                         tB, depth);
   predictStep(model, tB, u, duPrev);
   AdrSolver adr(opt_.fallback);
-  const AdrSolver::StepResult r = adr.relax(model, u, tB, uA);  // throws SolverFailure if it fails too
+  const AdrSolver::StepResult r = adr.relax(model, u, tB, uA, step_);  // throws SolverFailure if it fails too
   std::vector<double> f(model.numDofs());
   model.internalForce(u.data(), f.data());
   model.commit();
@@ -363,8 +363,10 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
 
 void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                                const std::vector<double>& times, StepObserver& observer) {
+  step_ = 0;
   runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB) {
+                 ++step_;
                  const Outcome o = advance(model, u, duPrev, tA, tB, 0);
                  return StepStats{o.iterations, o.linearIterations, o.residual, o.tolerance};
                });

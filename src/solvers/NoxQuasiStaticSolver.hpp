@@ -49,6 +49,7 @@ class NoxQuasiStaticSolver : public Solver {
   Outcome advance(Model& model, std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, int depth);
 
   NoxOptions opt_;
+  long step_ = 0;  // the load step being solved, for messages
   struct Linear;                       // Epetra map, pair stiffness and its preconditioner (the .cpp)
   std::unique_ptr<Linear> linear_;     // built on first use, kept for the whole run
   double scale_ = 1.0;                 // the pair stiffness' mean diagonal: the weight of prescribed rows

@@ -1,8 +1,8 @@
 #pragma once
 // A time or load-step integrator over a Model. Solvers know nothing of materials, files or output: they
 // advance (u, v) from t0 to t1 and report each completed step to an observer, which decides what to
-// write. A step is reported only after it has converged; a step that cannot converge throws
-// SolverFailure, so nothing non-converged is ever presented as a result.
+// write. A step is reported only after it has converged and its state is finite; otherwise the solver
+// throws SolverFailure (on every rank), so nothing non-converged or non-finite is presented as a result.
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,6 +37,9 @@ class Solver {
  public:
   virtual ~Solver() = default;
   virtual std::string name() const = 0;
+  // Checks the options against the built model before any output file is opened: InputError for a
+  // setting the model cannot run (every rank reaches the same verdict), warnings for doubtful ones.
+  virtual void check(const Model&) const {}
   // u, v hold the initial state on entry (prescribed values are applied by the solver); on return they
   // hold the final state, from which a following solver (Peridigm's Solver2 after Solver1) continues.
   // times: the start time, then the end of every load step (quasi-static solvers step through them all;

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <ctime>
 
+#include "FiniteCheck.hpp"
+#include "core/InputError.hpp"
+#include "core/Log.hpp"
 #include "model/Model.hpp"
 
 namespace pf {
@@ -14,12 +17,18 @@ SolverEntry VerletSolver::entry() {
   SolverEntry e;
   e.name = "Verlet";
   e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
-  e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate").positive(),
-                  S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ)").byDefault("0.8").positive()};
+  e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate; above that estimate "
+                                      "a warning, above 2 × it an input error").positive(),
+                  S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ)").byDefault("0.8").positive(),
+                  S::flag("Allow Unstable Time Step",
+                          "accept a `Fixed dt` more than 2 × the stable step estimate (otherwise an input error)")
+                      .byDefault("false")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     VerletOptions o;
     o.fixedDt = p.get("Fixed dt", 0.0);
     o.safetyFactor = p.get("Safety Factor");
+    o.allowUnstable = p.flag("Allow Unstable Time Step");
+    o.where = p.where();
     return std::unique_ptr<Solver>(new VerletSolver(o));
   };
   return e;
@@ -57,12 +66,28 @@ double VerletSolver::stableTimeStep(const Model& model) {
   return w2 > 0 ? 2.0 / std::sqrt(w2) : 1.0;
 }
 
+double VerletSolver::timeStep(const Model& model) const {
+  return opt_.fixedDt > 0 ? opt_.fixedDt : opt_.safetyFactor * stableTimeStep(model);
+}
+
+void VerletSolver::check(const Model& model) const {
+  if (opt_.fixedDt <= 0) return;
+  const double stable = stableTimeStep(model);
+  char msg[200];
+  std::snprintf(msg, sizeof msg, "Fixed dt = %g exceeds the stable time step estimate %g (%.3g times)", opt_.fixedDt,
+                stable, opt_.fixedDt / stable);
+  if (opt_.fixedDt > kRefuseFactor * stable && !opt_.allowUnstable)
+    throw InputError(opt_.where + ": " + msg + "; above " + std::to_string(static_cast<int>(kRefuseFactor)) +
+                     " times it is refused unless 'Allow Unstable Time Step' is true");
+  if (opt_.fixedDt > stable) warn(opt_.where + ": " + msg + "; the run may go unstable");
+}
+
 void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                        const std::vector<double>& times, StepObserver& observer) {
   const double t0 = times.front(), t1 = times.back();
   using Clock = std::chrono::steady_clock;
   const int n = model.numDofs();
-  double dt = opt_.fixedDt > 0 ? opt_.fixedDt : opt_.safetyFactor * stableTimeStep(model);
+  double dt = timeStep(model);
   const long steps = std::max(1L, static_cast<long>(std::ceil((t1 - t0) / dt - 1e-9)));
   if (opt_.fixedDt <= 0) dt = (t1 - t0) / steps;  // land exactly on t1
   const bool root = model.layout().rank() == 0;
@@ -76,6 +101,8 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   model.commit();
   model.bodyForce(t0, b.data());
   for (int k = 0; k < n; ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / rho[k / 3];
+  requireFiniteState(model, CheckPoint{"Verlet", 0, t0}, u, v, f,
+                     finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
   observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
 
   const long every = std::max(1L, steps / 20);
@@ -96,10 +123,13 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     forceTime.time([&] { model.internalForce(u.data(), f.data()); });
     model.commit();  // an explicit step is complete once its force is evaluated
     if (model.hasBodyForce()) model.bodyForce(t, b.data());
+    double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
     for (int k = 0; k < n; ++k) {
       a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / rho[k / 3];
       if (!fixed[k]) v[k] += 0.5 * dt * a[k];
+      probe += u[k] + v[k] + f[k];
     }
+    requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall}, u, v, f);
     if (root && (s % every == 0 || s == steps))

@@ -1,6 +1,8 @@
 #pragma once
 // Explicit velocity-Verlet (central difference) time integration with the lumped density. The time
-// step is "Fixed dt" or Safety Factor x the Gershgorin bound 2/sqrt(max_i bound_i/rho_i).
+// step is "Fixed dt" or Safety Factor x the Gershgorin bound 2/sqrt(max_i bound_i/rho_i). check(): a Fixed dt
+// above the bound warns, above kRefuseFactor x the bound is an input error unless Allow Unstable Time Step; a
+// non-finite displacement, velocity or force stops the run (SolverFailure) before the step is reported.
 #include "Solver.hpp"
 #include "core/SolverEntry.hpp"
 
@@ -9,6 +11,8 @@ namespace pf {
 struct VerletOptions {
   double fixedDt = 0.0;       // > 0: use this dt
   double safetyFactor = 0.8;  // used when fixedDt == 0
+  bool allowUnstable = false; // accept fixedDt > kRefuseFactor x the stable step
+  std::string where;          // the deck list, for input errors ("input.xml: Solver/Verlet")
 };
 
 class VerletSolver : public Solver {
@@ -16,11 +20,17 @@ class VerletSolver : public Solver {
   explicit VerletSolver(VerletOptions o) : opt_(o) {}
   static SolverEntry entry();
   std::string name() const override { return "Verlet"; }
+  void check(const Model& model) const override;  // Fixed dt against the stable step (warns or refuses)
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
   static double stableTimeStep(const Model& model);  // Gershgorin estimate, before the safety factor
+  // The Gershgorin bound is conservative, so a Fixed dt somewhat above it may still be stable (it warns);
+  // at twice the bound the highest mode of a uniform lattice is already amplified every step, so more
+  // than that is refused unless the user insists.
+  static constexpr double kRefuseFactor = 2.0;
 
  private:
+  double timeStep(const Model& model) const;  // Fixed dt, or Safety Factor x the stable step
   VerletOptions opt_;
 };
 

@@ -63,6 +63,10 @@ periforge_check(bar_verlet_np1_vs_np2 "bar_verlet_np1;bar_verlet_np2"
 # User-facing errors.
 add_test(NAME input_errors COMMAND ${PY} ${REG}/errors/run_error_cases.py ${PERIFORGE_EXE} ${REG}/bar/bar_3d.xml)
 set_tests_properties(input_errors PROPERTIES LABELS "regression")
+# Finite state or a clear stop (issue 15 part 3): non-finite states, unstable Fixed dt, duplicate and
+# isolated points, horizon below the spacing; np 1 and 2.
+add_test(NAME finite_state_errors COMMAND ${PY} ${REG}/errors/run_finite_cases.py ${PERIFORGE_EXE} ${REG} ${MPIRUN})
+set_tests_properties(finite_state_errors PROPERTIES LABELS "regression" PROCESSORS 2 TIMEOUT 600)
 
 # Tool self-tests.
 add_test(NAME exodiff_self_test COMMAND ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py --self-test)
