@@ -61,14 +61,49 @@ void OutputManager::requireComputed(const std::string& var, const std::string& w
   throw InputError(inputFile_ + ": " + where + ": '" + var + "' is not computed by any material of this run");
 }
 
-OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::string& listName) const {
-  // Nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one.
+// Nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one; -1 if none
+// (a NaN coordinate). d2: its squared distance.
+int OutputManager::nearestPoint(const double* at, double* d2) const {
   int best = -1;
-  double bestD = std::numeric_limits<double>::max();
+  *d2 = std::numeric_limits<double>::max();
   for (int q = 0; q < pb_.cloud.size(); ++q) {
     double d = 0;
-    for (int c = 0; c < 3; ++c) d += (pb_.cloud.x[3 * q + c] - p.at[c]) * (pb_.cloud.x[3 * q + c] - p.at[c]);
-    if (d < bestD) { bestD = d; best = q; }
+    for (int c = 0; c < 3; ++c) d += (pb_.cloud.x[3 * q + c] - at[c]) * (pb_.cloud.x[3 * q + c] - at[c]);
+    if (d < *d2) { *d2 = d; best = q; }
+  }
+  return best;
+}
+
+// The grid spacing, or on an irregular cloud (Text File, unequal QuickGrid spacings) the distance from
+// point q to its nearest neighbour: how far a probe may lie from the body and still mean point q.
+double OutputManager::spacingAt(int q) const {
+  if (pb_.cloud.spacing > 0.0) return pb_.cloud.spacing;
+  double d2 = std::numeric_limits<double>::max();
+  for (int p = 0; p < pb_.cloud.size(); ++p) {
+    if (p == q) continue;
+    double d = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double e = pb_.cloud.x[3 * p + c] - pb_.cloud.x[3 * q + c];
+      d += e * e;
+    }
+    d2 = std::min(d2, d);
+  }
+  return pb_.cloud.size() > 1 ? std::sqrt(d2) : std::numeric_limits<double>::max();
+}
+
+OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::string& listName) const {
+  double d2 = 0;
+  const int best = nearestPoint(p.at.data(), &d2);
+  std::ostringstream at;
+  at << "(" << p.at[0] << ", " << p.at[1] << ", " << p.at[2] << ")";
+  if (best < 0)
+    throw InputError(inputFile_ + ": " + listName + "/Probes/" + p.name + ": position " + at.str() + " is not a point");
+  const double h = spacingAt(best);
+  if (std::sqrt(d2) > h * (1.0 + 1e-9)) {
+    std::ostringstream msg;
+    msg << inputFile_ << ": " << listName << "/Probes/" << p.name << ": position " << at.str()
+        << " is outside the body: the nearest point is " << std::sqrt(d2) << " away, more than the grid spacing " << h;
+    throw InputError(msg.str());
   }
   Probe probe{p.name, -1, p.variables};
   for (const std::string& var : probe.variables) requireComputed(var, listName + "/Probes/" + p.name);

@@ -46,6 +46,8 @@ class OutputManager : public StepObserver {
   };
   void requireComputed(const std::string& var, const std::string& where) const;
   Probe locateProbe(const ProbeSpec& p, const std::string& listName) const;
+  int nearestPoint(const double* at, double* d2) const;
+  double spacingAt(int q) const;
   void addReactions(const OutputSpec& out);
   void openFiles();
   double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
