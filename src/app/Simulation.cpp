@@ -3,33 +3,47 @@
 #include <chrono>
 #include <cstdio>
 
+#include "OutputFanout.hpp"
+#include "StopSignal.hpp"
 #include "core/InputError.hpp"
-#include "input/Deck.hpp"
+#include "core/Log.hpp"
 #include "core/Material.hpp"
+#include "input/Deck.hpp"
 #include "model/ModelBuilder.hpp"
 #include "output/OutputManager.hpp"
 #include "parallel/Communicator.hpp"
-#include "core/Log.hpp"
 #include "solvers/SolverFactory.hpp"
 
 namespace pf {
 namespace {
 
-// Hands each reported step to every output list's manager (Output, or Output1, Output2, ...).
-class OutputFanout : public StepObserver {
- public:
-  std::vector<std::unique_ptr<OutputManager>> managers;
-  void onStep(const StepReport& r, const std::vector<double>& u, const std::vector<double>& v,
-              const std::vector<double>& f) override {
-    for (auto& m : managers) m->onStep(r, u, v, f);
-  }
+using Clock = std::chrono::steady_clock;
+
+// How a run ended badly: the one line rank 0 prints (after "periforge: "), the exit code, and the verb
+// of the output files' status line.
+struct Outcome {
+  std::string line;
+  int code = 1;
+  std::string verb = "failed";
 };
 
-// Every rank reaches the same verdict on input errors (all ranks read the same deck), so each rank
-// can stop on its own; rank 0 alone prints.
-int fail(int rank, const std::string& kind, const std::string& what) {
-  if (rank == 0) std::fprintf(stderr, "periforge: %s%s\n", kind.c_str(), what.c_str());
-  return 1;
+Outcome describe(const std::exception_ptr& error) {
+  const std::string kept = " (the .part output files hold the converged steps)";
+  try {
+    std::rethrow_exception(error);
+  } catch (const Interrupted& e) {
+    return {e.what() + kept, 128 + e.signal(), "interrupted"};
+  } catch (const InputError& e) {
+    return {std::string("input error: ") + e.what()};
+  } catch (const SolverFailure& e) {
+    return {std::string("solver failed: ") + e.what() + kept};
+  } catch (const ConstitutiveFailure& e) {
+    return {std::string("material update failed: ") + e.what()};
+  } catch (const std::exception& e) {
+    return {std::string("error: ") + e.what()};
+  } catch (...) {
+    return {"error: unknown exception"};
+  }
 }
 
 // u, v from the initial conditions at t0. Every condition the solvers evaluate at t0 must be finite there:
@@ -48,57 +62,72 @@ void initialState(const Problem& problem, double t0, std::vector<double>& u, std
   }
 }
 
+// "Solver", or Peridigm's Solver1, Solver2, ... run in sequence, each continuing from the state
+// (displacement, velocity, material history) the previous one ended with.
+void solve(const Deck& deck, const std::vector<std::unique_ptr<Solver>>& solvers, Problem& problem,
+           std::vector<double>& u, std::vector<double>& v, OutputFanout& output) {
+  Model& model = *problem.model;
+  for (std::size_t k = 0; k < solvers.size(); ++k) {
+    if (model.layout().rank() == 0 && solvers.size() > 1)
+      std::printf("periforge: %s: solver %s\n", deck.solvers[k].listName.c_str(), solvers[k]->name().c_str());
+    solvers[k]->run(model, u, v, deck.solvers[k].times, output);
+  }
+}
+
+void printDone(const OutputFanout& output, Clock::time_point start) {
+  std::string files;
+  for (const auto& m : output.managers) {
+    files += (files.empty() ? "" : ", ") + m->historyFile();
+    if (!m->exodusFile().empty()) files += " and " + m->exodusFile();
+  }
+  std::printf("periforge: done in %.2f s; wrote %s\n", std::chrono::duration<double>(Clock::now() - start).count(),
+              files.empty() ? "nothing (no Output list)" : files.c_str());
+}
+
+// Throws on failure, after marking every output list's files as failed or interrupted.
+void run(const std::string& inputFile, const Communicator& comm, Clock::time_point start) {
+  const Deck deck = readDeck(inputFile);
+  std::vector<std::unique_ptr<Solver>> solvers;  // made first: a bad solver list fails before the set-up
+  for (const SolverSpec& s : deck.solvers) solvers.push_back(makeSolver(s));
+  Problem problem = buildProblem(deck, comm);
+  Model& model = *problem.model;
+  const double setup = std::chrono::duration<double>(Clock::now() - start).count();
+  const double bonds = model.sum(static_cast<double>(model.layout().family().numBonds()));
+  if (comm.rank() == 0)
+    std::printf("periforge: %s: %d points, %.0f bonds, %d rank(s), set-up %.2f s, solver %s\n", inputFile.c_str(),
+                model.layout().numGlobal(), bonds, comm.size(), setup, solvers.front()->name().c_str());
+  // Checks that need the model come before any output file is opened.
+  std::vector<double> u(model.numDofs(), 0.0), v(model.numDofs(), 0.0);
+  initialState(problem, deck.solvers.front().times.front(), u, v);
+  for (const auto& s : solvers) s->check(model);
+  OutputFanout output(comm);
+  try {
+    for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
+    solve(deck, solvers, problem, u, v, output);
+    output.finish();
+  } catch (...) {
+    const Outcome o = describe(std::current_exception());
+    output.abandon(o.verb, o.line);
+    throw;
+  }
+  if (comm.rank() == 0) printDone(output, start);
+}
+
 }  // namespace
 
 int runSimulation(const std::string& inputFile) {
   const Communicator comm = Communicator::world();
-  const int rank = comm.rank();
-  setPrintingRank(rank == 0);
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
+  setPrintingRank(comm.rank() == 0);
+  installStopHandlers();
   try {
-    const Deck deck = readDeck(inputFile);
-    // "Solver", or Peridigm's Solver1, Solver2, ... run in sequence, each continuing from the state
-    // (displacement, velocity, material history) the previous one ended with.
-    std::vector<std::unique_ptr<Solver>> solvers;
-    for (const SolverSpec& s : deck.solvers) solvers.push_back(makeSolver(s));
-    Problem problem = buildProblem(deck, comm);
-    Model& model = *problem.model;
-    const double setup = std::chrono::duration<double>(Clock::now() - start).count();
-    const double bonds = model.sum(static_cast<double>(model.layout().family().numBonds()));
-    if (rank == 0)
-      std::printf("periforge: %s: %d points, %.0f bonds, %d rank(s), set-up %.2f s, solver %s\n", inputFile.c_str(),
-                  model.layout().numGlobal(), bonds, comm.size(), setup, solvers.front()->name().c_str());
-
-    const double t0 = deck.solvers.front().times.front();
-    std::vector<double> u(model.numDofs(), 0.0), v(model.numDofs(), 0.0);
-    initialState(problem, t0, u, v);  // before any output file is opened
-    for (const auto& s : solvers) s->check(model);
-    OutputFanout output;
-    for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
-    for (std::size_t k = 0; k < solvers.size(); ++k) {
-      if (rank == 0 && solvers.size() > 1)
-        std::printf("periforge: %s: solver %s\n", deck.solvers[k].listName.c_str(), solvers[k]->name().c_str());
-      solvers[k]->run(model, u, v, deck.solvers[k].times, output);
-    }
-    if (rank == 0) {
-      std::string files;
-      for (const auto& m : output.managers) {
-        files += (files.empty() ? "" : ", ") + m->historyFile();
-        if (!m->exodusFile().empty()) files += " and " + m->exodusFile();
-      }
-      std::printf("periforge: done in %.2f s; wrote %s\n", std::chrono::duration<double>(Clock::now() - start).count(),
-                  files.empty() ? "nothing (no Output list)" : files.c_str());
-    }
+    run(inputFile, comm, Clock::now());
     return 0;
-  } catch (const InputError& e) {
-    return fail(rank, "input error: ", e.what());
-  } catch (const SolverFailure& e) {
-    return fail(rank, "solver failed: ", std::string(e.what()) + " (output holds the converged steps only)");
-  } catch (const ConstitutiveFailure& e) {
-    return fail(rank, "material update failed: ", e.what());
-  } catch (const std::exception& e) {
-    return fail(rank, "error: ", e.what());
+  } catch (...) {
+    // Every rank reaches the same verdict (input is read by all; rank-local failures are agreed on
+    // collectively), so each rank stops on its own; rank 0 alone prints.
+    const Outcome o = describe(std::current_exception());
+    if (comm.rank() == 0) std::fprintf(stderr, "periforge: %s\n", o.line.c_str());
+    return o.code;
   }
 }
 

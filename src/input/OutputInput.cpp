@@ -132,6 +132,8 @@ OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& 
   OutputSpec s;
   s.listName = path;
   s.filename = v.text("Output Filename");
+  // An empty name would write the hidden files ".csv" and ".e" in the working directory.
+  if (s.filename.empty()) fail(file, path, "'Output Filename' is empty");
   s.exodus = v.text("Output File Type") == "ExodusII";
   s.frequency = static_cast<int>(v.get("Output Frequency"));
   s.firstStep = static_cast<long>(v.get("Initial Output Step"));

@@ -2,13 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 
 #include "ExodusWriter.hpp"
 #include "core/OutputFields.hpp"
 #include "HistoryWriter.hpp"
+#include "OutputFiles.hpp"
 #include "core/InputError.hpp"
+#include "parallel/Collective.hpp"
 
 namespace pf {
 namespace {
@@ -30,8 +34,10 @@ bool contains(const std::vector<std::string>& v, const std::string& s) {
 OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& problem)
     : pb_(problem), model_(*problem.model), inputFile_(deck.file) {
   exodus_ = out.exodus;
+  baseName_ = out.filename;
   exodusName_ = out.filename + ".e";
   historyName_ = out.filename + ".csv";
+  where_ = deck.file + ": " + out.listName + "/Output Filename '" + out.filename + "'";
   frequency_ = out.frequency;
   first_ = out.firstStep;
   last_ = out.lastStep;
@@ -46,8 +52,25 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   for (const ProbeSpec& p : out.probes) probes_.push_back(locateProbe(p, out.listName));
   addReactions(out);
   applied_ = out.appliedDisplacement;
-  if (model_.layout().rank() == 0) openFiles();
   bodyForce_.assign(model_.numDofs(), 0.0);
+  onRoot([&] { openFiles(); });
+}
+
+// Collective: rank 0 runs write; its failure (a full disk, a missing directory) becomes every rank's error,
+// naming the deck and the output list.
+void OutputManager::onRoot(const std::function<void()>& write) {
+  const bool root = model_.layout().rank() == 0;
+  collectively(model_.layout().comm(), [&] {
+    if (!root) return;
+    try {
+      write();
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      throw std::runtime_error(what.rfind(where_, 0) == 0 ? what : where_ + ": " + what);
+    }
+  });
 }
 
 // The names are known to the input layer; whether this run's materials compute them is known here.
@@ -61,14 +84,49 @@ void OutputManager::requireComputed(const std::string& var, const std::string& w
   throw InputError(inputFile_ + ": " + where + ": '" + var + "' is not computed by any material of this run");
 }
 
-OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::string& listName) const {
-  // Nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one.
+// Nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one; -1 if none
+// (a NaN coordinate). d2: its squared distance.
+int OutputManager::nearestPoint(const double* at, double* d2) const {
   int best = -1;
-  double bestD = std::numeric_limits<double>::max();
+  *d2 = std::numeric_limits<double>::max();
   for (int q = 0; q < pb_.cloud.size(); ++q) {
     double d = 0;
-    for (int c = 0; c < 3; ++c) d += (pb_.cloud.x[3 * q + c] - p.at[c]) * (pb_.cloud.x[3 * q + c] - p.at[c]);
-    if (d < bestD) { bestD = d; best = q; }
+    for (int c = 0; c < 3; ++c) d += (pb_.cloud.x[3 * q + c] - at[c]) * (pb_.cloud.x[3 * q + c] - at[c]);
+    if (d < *d2) { *d2 = d; best = q; }
+  }
+  return best;
+}
+
+// The grid spacing, or on an irregular cloud (Text File, unequal QuickGrid spacings) the distance from
+// point q to its nearest neighbour: how far a probe may lie from the body and still mean point q.
+double OutputManager::spacingAt(int q) const {
+  if (pb_.cloud.spacing > 0.0) return pb_.cloud.spacing;
+  double d2 = std::numeric_limits<double>::max();
+  for (int p = 0; p < pb_.cloud.size(); ++p) {
+    if (p == q) continue;
+    double d = 0;
+    for (int c = 0; c < 3; ++c) {
+      const double e = pb_.cloud.x[3 * p + c] - pb_.cloud.x[3 * q + c];
+      d += e * e;
+    }
+    d2 = std::min(d2, d);
+  }
+  return pb_.cloud.size() > 1 ? std::sqrt(d2) : std::numeric_limits<double>::max();
+}
+
+OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::string& listName) const {
+  double d2 = 0;
+  const int best = nearestPoint(p.at.data(), &d2);
+  std::ostringstream at;
+  at << "(" << p.at[0] << ", " << p.at[1] << ", " << p.at[2] << ")";
+  if (best < 0)
+    throw InputError(inputFile_ + ": " + listName + "/Probes/" + p.name + ": position " + at.str() + " is not a point");
+  const double h = spacingAt(best);
+  if (std::sqrt(d2) > h * (1.0 + 1e-9)) {
+    std::ostringstream msg;
+    msg << inputFile_ << ": " << listName << "/Probes/" << p.name << ": position " << at.str()
+        << " is outside the body: the nearest point is " << std::sqrt(d2) << " away, more than the grid spacing " << h;
+    throw InputError(msg.str());
   }
   Probe probe{p.name, -1, p.variables};
   for (const std::string& var : probe.variables) requireComputed(var, listName + "/Probes/" + p.name);
@@ -96,8 +154,20 @@ void OutputManager::addReactions(const OutputSpec& out) {
   }
 }
 
-// Rank 0 writes: the history's columns, and the Exodus file's variables.
+// Rank 0: the lock first (a second run on the name must not touch the first one's parts), then the writers.
 void OutputManager::openFiles() {
+  files_ = std::make_unique<OutputFiles>(baseName_, exodus_ ? std::vector<std::string>{".csv", ".e"}
+                                                            : std::vector<std::string>{".csv"}, where_);
+  try {
+    openWriters();
+  } catch (const std::exception& e) {
+    files_->abandon(std::string("failed before the first step: ") + e.what());
+    throw;
+  }
+}
+
+// The history's columns, and the Exodus file's variables.
+void OutputManager::openWriters() {
   std::vector<std::string> cols = {"time", "step"};
   if (applied_) cols.push_back("Applied_Displacement");
   auto label = [](std::string s) {
@@ -113,16 +183,16 @@ void OutputManager::openFiles() {
       else
         cols.push_back("Probe_" + label(p.name) + "_" + var);
     }
-  history_ = std::make_unique<HistoryWriter>(historyName_, cols);
+  history_ = std::make_unique<HistoryWriter>(files_->part(".csv"), cols);
   if (!exodus_) return;
   std::vector<std::string> scalars, elements;
   for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
   if (nodalVectors_.empty() && elements.empty() && !globals_.empty())
     // Peridigm's file for global data only: one dummy node at the origin in one one-element block.
-    writer_ = std::make_unique<ExodusWriter>(exodusName_, std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
+    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
                                              false, nodalVectors_, scalars, elements, globals_);
   else
-    writer_ = std::make_unique<ExodusWriter>(exodusName_, pb_.cloud.x, pb_.cloud.block, pb_.cloud.planar,
+    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), pb_.cloud.x, pb_.cloud.block, pb_.cloud.planar,
                                              nodalVectors_, scalars, elements, globals_);
 }
 
@@ -161,11 +231,22 @@ std::vector<double> OutputManager::ownedField(const std::string& var, int ncomp,
 void OutputManager::onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
                            const std::vector<double>& f) {
   ++count_;
+  lastStep_ = count_ - 1;
+  lastTime_ = report.time;
   if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % frequency_ != 0) return;
-  const bool root = model_.layout().rank() == 0;
-  const Communicator& comm = model_.layout().comm();
+  const std::vector<double> global = historyRow(report, u, v, f);
+  onRoot([&] {
+    std::vector<double> row = {report.time, static_cast<double>(count_ - 1)};
+    if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));
+    row.insert(row.end(), global.begin(), global.end());
+    history_->writeRow(row);
+  });
+  if (exodus_) writeExodusStep(report.time, u, v, f);
+}
 
-  // History row: reactions and probes are reduced over ranks (a probe lives on one rank, others add 0).
+// Collective: reactions and probes reduced over ranks; fills bodyForce_ at the step's time first (a probe lives on one rank, others add 0).
+std::vector<double> OutputManager::historyRow(const StepReport& report, const std::vector<double>& u,
+                                              const std::vector<double>& v, const std::vector<double>& f) {
   std::vector<double> local;
   if (model_.hasBodyForce()) model_.bodyForce(report.time, bodyForce_.data());
   for (const Reaction& r : reactions_)
@@ -180,15 +261,13 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
       for (int c = 0; c < ncomp; ++c) local.push_back(p.local >= 0 ? nodeValue(var, c, p.local, u, v, f) : 0.0);
     }
   std::vector<double> global(local.size());
-  if (!local.empty()) comm.sum(local.data(), global.data(), static_cast<int>(local.size()));
-  if (root) {
-    std::vector<double> row = {report.time, static_cast<double>(count_ - 1)};
-    if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));
-    row.insert(row.end(), global.begin(), global.end());
-    history_->writeRow(row);
-  }
+  if (!local.empty()) model_.layout().comm().sum(local.data(), global.data(), static_cast<int>(local.size()));
+  return global;
+}
 
-  if (!exodus_) return;
+// Collective: the fields are gathered to rank 0, which writes them.
+void OutputManager::writeExodusStep(double time, const std::vector<double>& u, const std::vector<double>& v,
+                                    const std::vector<double>& f) {
   std::map<std::string, double> globals;
   for (const std::string& var : globals_) {
     double ke = 0.0;  // Global_Kinetic_Energy = sum 1/2 rho V |v|^2
@@ -206,7 +285,28 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
     std::vector<double> owned = ownedField(var, 1, u, v, f);
     scalars[exodusName(var)] = model_.layout().gatherToRoot(owned.data(), 1);
   }
-  if (root) writer_->writeStep(report.time, vectors, none, scalars, globals);
+  onRoot([&] { writer_->writeStep(time, vectors, none, scalars, globals); });
+}
+
+void OutputManager::finish() {
+  onRoot([&] {
+    writer_.reset();  // closes the Exodus file before it is renamed
+    history_.reset();
+    files_->commit();
+  });
+}
+
+void OutputManager::abandon(const std::string& verb, const std::string& line) noexcept {
+  if (!files_) return;  // not rank 0, or the files were never opened
+  writer_.reset();
+  history_.reset();
+  std::string when = "before the first step";
+  if (lastStep_ >= 0) {
+    std::ostringstream t;
+    t << "after step " << lastStep_ << " (t = " << lastTime_ << ")";
+    when = t.str();
+  }
+  files_->abandon(verb + " " + when + ": " + line);
 }
 
 }  // namespace pf

@@ -11,6 +11,11 @@
 // call n (1-based) is written if Initial Output Step <= n <= Final Output Step + 1 and (n - 1) is a multiple
 // of Output Frequency. The CSV's step column is n - 1. Global variables (Global_Kinetic_Energy) go to the
 // Exodus globals; a list that asks for globals only gets Peridigm's one-dummy-node file.
+//
+// Files are written as <name>.e.part / <name>.csv.part under <name>.lock and get their final names in
+// finish(); abandon() leaves them with a <name>.status line instead (OutputFiles). Rank 0 writes; every
+// call that can fail there is agreed on collectively, so a failed write throws on every rank.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +27,7 @@ namespace pf {
 
 class ExodusWriter;
 class HistoryWriter;
+class OutputFiles;
 
 class OutputManager : public StepObserver {
  public:
@@ -30,6 +36,11 @@ class OutputManager : public StepObserver {
   ~OutputManager() override;
   void onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
               const std::vector<double>& f) override;
+  // Collective: the run ended well; the parts become <name>.e / <name>.csv.
+  void finish();
+  // The run failed or was stopped (verb: "failed", "interrupted"): <name>.status says so, the parts stay.
+  // Not collective (every rank may call it; rank 0 writes).
+  void abandon(const std::string& verb, const std::string& line) noexcept;
   std::string exodusFile() const { return exodusName_; }
   std::string historyFile() const { return historyName_; }
 
@@ -46,8 +57,16 @@ class OutputManager : public StepObserver {
   };
   void requireComputed(const std::string& var, const std::string& where) const;
   Probe locateProbe(const ProbeSpec& p, const std::string& listName) const;
+  int nearestPoint(const double* at, double* d2) const;
+  double spacingAt(int q) const;
   void addReactions(const OutputSpec& out);
+  void onRoot(const std::function<void()>& write);
   void openFiles();
+  void openWriters();
+  std::vector<double> historyRow(const StepReport& report, const std::vector<double>& u,
+                                 const std::vector<double>& v, const std::vector<double>& f);
+  void writeExodusStep(double time, const std::vector<double>& u, const std::vector<double>& v,
+                       const std::vector<double>& f);
   double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
                    const std::vector<double>& f) const;
   std::vector<double> ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
@@ -60,12 +79,15 @@ class OutputManager : public StepObserver {
   long first_ = 1, last_ = 0;  // Initial / Final Output Step (last_ = 0: no limit)
   long count_ = 0;             // steps reported so far, over all solvers
   bool exodus_ = false;
-  std::string exodusName_, historyName_;
+  std::string exodusName_, historyName_, baseName_, where_;
+  long lastStep_ = -1;     // the CSV step of the last reported step (-1: none yet), and its time
+  double lastTime_ = 0.0;
   std::vector<std::string> nodalVectors_, elementScalars_, globals_;
   std::vector<Probe> probes_;
   std::vector<Reaction> reactions_;
   std::unique_ptr<ExodusWriter> writer_;
   std::unique_ptr<HistoryWriter> history_;
+  std::unique_ptr<OutputFiles> files_;  // rank 0
   std::vector<double> bodyForce_;
   std::shared_ptr<const Expression> applied_;  // "Applied Displacement" condition's value, or null
 };

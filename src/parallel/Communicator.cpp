@@ -37,6 +37,21 @@ void Communicator::max(const double* in, double* out, int n) const {
 
 void Communicator::barrier() const { MPI_Barrier(impl_->mpi); }
 
+int Communicator::firstFailing(bool mine) const {
+  const int candidate = mine ? rank() : size();
+  int lowest = 0;
+  MPI_Allreduce(&candidate, &lowest, 1, MPI_INT, MPI_MIN, impl_->mpi);
+  return lowest < size() ? lowest : -1;
+}
+
+std::string Communicator::broadcast(const std::string& text, int root) const {
+  int n = static_cast<int>(text.size());
+  MPI_Bcast(&n, 1, MPI_INT, root, impl_->mpi);
+  std::string out = rank() == root ? text : std::string(static_cast<std::size_t>(n), '\0');
+  if (n > 0) MPI_Bcast(&out[0], n, MPI_CHAR, root, impl_->mpi);
+  return out;
+}
+
 MpiSession::MpiSession(int& argc, char**& argv) { MPI_Init(&argc, &argv); }
 
 MpiSession::~MpiSession() { MPI_Finalize(); }

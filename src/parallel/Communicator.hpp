@@ -3,6 +3,7 @@
 // sight: above src/parallel, code sees ranks, sums and maxima only. Copies share one communicator. The
 // MPI run itself (init/finalize) is an MpiSession, owned by the executable's main.
 #include <memory>
+#include <string>
 
 namespace pf {
 
@@ -19,6 +20,12 @@ class Communicator {
   void sum(const double* in, double* out, int n) const;
   void max(const double* in, double* out, int n) const;
   void barrier() const;
+  // Collective: the lowest rank whose `mine` is true, or -1 when it is false on every rank. Lets ranks
+  // agree on a failure that happened on some of them only (a rank-0 file write, say).
+  int firstFailing(bool mine) const;
+  bool anyFailed(bool mine) const { return firstFailing(mine) >= 0; }
+  // Collective: every rank returns root's text (the others' argument is ignored).
+  std::string broadcast(const std::string& text, int root) const;
 
   struct Impl;  // defined in parallel/CommunicatorImpl.hpp (the MPI_Comm and an Epetra_MpiComm on it)
   const Impl& impl() const;
