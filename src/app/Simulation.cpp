@@ -11,6 +11,7 @@
 #include "parallel/Communicator.hpp"
 #include "core/Log.hpp"
 #include "solvers/SolverFactory.hpp"
+#include "SizeGuard.hpp"
 
 namespace pf {
 namespace {
@@ -42,6 +43,7 @@ int runSimulation(const std::string& inputFile) {
   const auto start = Clock::now();
   try {
     const Deck deck = readDeck(inputFile);
+    guardSize(deck, comm);  // before anything sized by the deck is allocated
     // "Solver", or Peridigm's Solver1, Solver2, ... run in sequence, each continuing from the state
     // (displacement, velocity, material history) the previous one ended with.
     std::vector<std::unique_ptr<Solver>> solvers;
