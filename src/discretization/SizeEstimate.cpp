@@ -224,7 +224,7 @@ void checkSize(const Deck& deck, const SizeEstimate& e, int np, double limit, co
                              : d.type == DiscretizationSpec::Type::TextFile ? "a coarser mesh"
                                                                              : "a larger 'Spacing'";
   char counts[160];
-  std::snprintf(counts, sizeof counts, "%.4g points, %.4g bonds (%.0f per point)", e.points, e.bonds, e.family);
+  std::snprintf(counts, sizeof counts, "%.4g points, %.4g bonds (%.4g per point)", e.points, e.bonds, e.family);
   const std::string fix = "; use " + change + " or a smaller 'Horizon'";
   if (e.points > INT_MAX || e.bonds > INT_MAX)
     throw InputError(deck.file + ": Discretization: " + counts + " overflow 32-bit ids (at most " +
