@@ -145,6 +145,12 @@ double loadTimes(const Deck& deck) {
   return n;
 }
 
+bool hasNewtonKrylov(const Deck& deck) {
+  for (const SolverSpec& s : deck.solvers)
+    if (s.type == "NOXQuasiStatic" || s.type == "QuasiStatic") return true;
+  return false;
+}
+
 }  // namespace
 
 double latticeFamily(const std::array<double, 3>& cell, const std::array<double, 3>& extent, double radius,
@@ -187,18 +193,30 @@ SizeEstimate estimateSize(const Deck& deck) {
   e.family = std::min(e.family, std::max(0.0, e.points - 1.0));
   e.bonds = e.points * e.family;
   e.loadTimes = loadTimes(deck);
+  e.newtonKrylov = hasNewtonKrylov(deck);
   return e;
 }
 
-double bytesPerRank(const SizeEstimate& e, int np, const MemoryModel& m) {
+MemoryModel memoryModel(const SizeEstimate& e) {
+  // Least-squares fit (relative error) to peak RSS at np 1 of 8 Verlet decks (8e3-5e5 points, 2e6-6e7
+  // bonds): every one within 0.2 %; the per-rank share of the cloud from two of them at np 2.
+  const MemoryModel explicitSolvers{60.1e6, 90.0, 667.0, 36.0};
+  // NOX adds what its peak depends on beyond points and bonds, taken at its worst: the whole GMRES basis
+  // (201 vectors of 3 doubles per point at the default Krylov size 200, touched only as far as the solve
+  // iterates) and the pair-stiffness matrix with its ML hierarchy (120 B per bond: 9 entries of 12 B, and
+  // ML's share). Measured runs use 0.46-1.0 of it, so it is an upper bound.
+  const MemoryModel newton{60.1e6, 90.0, 667.0 + 201.0 * 3.0 * 8.0, 36.0 + 120.0};
+  return e.newtonKrylov ? newton : explicitSolvers;
+}
+
+double bytesPerRank(const SizeEstimate& e, int np) {
+  const MemoryModel m = memoryModel(e);
   const double p = std::max(1, np);
   return m.fixed + m.perRankPoint * e.points + (m.perPoint * e.points + m.perBond * e.bonds) / p +
          8.0 * e.loadTimes;
 }
 
-double bytesPerRun(const SizeEstimate& e, int np, const MemoryModel& m) {
-  return std::max(1, np) * bytesPerRank(e, np, m);
-}
+double bytesPerRun(const SizeEstimate& e, int np) { return std::max(1, np) * bytesPerRank(e, np); }
 
 double availableMemory() {
   std::ifstream in("/proc/meminfo");
@@ -229,7 +247,7 @@ void checkSize(const Deck& deck, const SizeEstimate& e, int np, double limit, co
   if (e.points > INT_MAX || e.bonds > INT_MAX)
     throw InputError(deck.file + ": Discretization: " + counts + " overflow 32-bit ids (at most " +
                      std::to_string(INT_MAX) + " each)" + fix);
-  const double need = bytesPerRun(e, np, MemoryModel());
+  const double need = bytesPerRun(e, np);
   if (limit > 0.0 && need > limit)
     throw InputError(deck.file + ": Discretization: " + counts + " need about " + bytesText(need) + " at np " +
                      std::to_string(np) + ", more than " + limitName + " (" + bytesText(limit) + ")" + fix);

@@ -16,16 +16,19 @@ struct SizeEstimate {
   double loadTimes = 0.0;   // solver times every rank holds (SolverSpec::times)
   bool holes = false;       // the deck has holes: points (and bonds) are upper bounds
   bool meshFile = false;    // Text File: the spacing is inferred from the mesh, the family approximate
+  bool newtonKrylov = false;  // a NOX solver: its pair-stiffness preconditioner and Krylov basis cost more
 };
 
-// Measured memory model (BENCHMARKS.md, "Memory estimate"): every rank holds the whole cloud
-// (perRankPoint per point) and its share of the distributed state (perPoint, perBond).
+// Peak resident bytes of one rank = fixed + perRankPoint * points + (perPoint * points + perBond * bonds) / np:
+// every rank holds the whole cloud, and its share of the distributed state. Fitted to peak RSS of real runs
+// (docs/input.md, "Size and memory guard").
 struct MemoryModel {
-  double fixed = 60.0e6;          // executable, Trilinos, MPI: resident before the deck matters
-  double perRankPoint = 120.0;    // the replicated PointCloud, partition input
-  double perPoint = 900.0;        // distributed per-point state, maps, vectors, output buffers
-  double perBond = 43.0;          // neighbour, length, influence, bond state (BENCHMARKS.md)
+  double fixed;         // executable, Trilinos, MPI: resident before the deck matters
+  double perRankPoint;  // the replicated PointCloud and partition input, on every rank
+  double perPoint;      // distributed per-point state, maps, vectors, output buffers
+  double perBond;       // neighbour, length, influence, bond state (and NOX's pair matrix)
 };
+MemoryModel memoryModel(const SizeEstimate& e);  // Verlet and ADR, or NOX
 
 // Throws InputError naming the deck when a count is unusable (a mesh file that cannot be read).
 SizeEstimate estimateSize(const Deck& deck);
@@ -37,8 +40,8 @@ double latticeFamily(const std::array<double, 3>& cell, const std::array<double,
                      bool partialVolume);
 
 // Bytes one rank holds at np ranks, and the whole run (np ranks on one machine share its memory).
-double bytesPerRank(const SizeEstimate& e, int np, const MemoryModel& m = MemoryModel());
-double bytesPerRun(const SizeEstimate& e, int np, const MemoryModel& m = MemoryModel());
+double bytesPerRank(const SizeEstimate& e, int np);
+double bytesPerRun(const SizeEstimate& e, int np);
 
 // MemAvailable of /proc/meminfo in bytes, or 0 when it cannot be read (then only Maximum Memory limits).
 double availableMemory();
