@@ -13,6 +13,7 @@
 #include "output/OutputManager.hpp"
 #include "parallel/Communicator.hpp"
 #include "solvers/SolverFactory.hpp"
+#include "SizeGuard.hpp"
 
 namespace pf {
 namespace {
@@ -87,6 +88,7 @@ void printDone(const OutputFanout& output, Clock::time_point start) {
 // Throws on failure, after marking every output list's files as failed or interrupted.
 void run(const std::string& inputFile, const Communicator& comm, Clock::time_point start) {
   const Deck deck = readDeck(inputFile);
+  guardSize(deck, comm);  // before anything sized by the deck is allocated
   std::vector<std::unique_ptr<Solver>> solvers;  // made first: a bad solver list fails before the set-up
   for (const SolverSpec& s : deck.solvers) solvers.push_back(makeSolver(s));
   Problem problem = buildProblem(deck, comm);

@@ -107,6 +107,7 @@ struct Deck {
   std::string file;                   // as given on the command line (error messages name it)
   std::string directory;              // relative file names in the deck resolve against it
   bool verbose = false;
+  double maxMemory = 0.0;             // "Maximum Memory" in bytes for the whole run (0: MemAvailable only)
   DiscretizationSpec discretization;
   std::vector<MaterialSpec> materials;
   std::vector<BlockGroupSpec> blocks;

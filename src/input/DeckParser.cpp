@@ -60,8 +60,12 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
   Deck deck;
   deck.file = file;
   deck.directory = directory;
-  const ParameterValues top = readList(p, {ParameterSpec::flag("Verbose")}, topLists(p, file), file, "top level");
+  const ParameterSpec maxMemory = ParameterSpec::real(
+      "Maximum Memory", "bytes the whole run may use (all ranks); default: the machine's MemAvailable").positive();
+  const ParameterValues top =
+      readList(p, {ParameterSpec::flag("Verbose"), maxMemory}, topLists(p, file), file, "top level");
   deck.verbose = top.get("Verbose", 0.0) != 0.0;
+  deck.maxMemory = top.get("Maximum Memory", 0.0);
   deck.solvers = solvers(p, file);
   deck.discretization = parseDiscretization(requireSublist(p, "Discretization", file, "top level"), file, directory);
   deck.materials = parseMaterials(p, file);

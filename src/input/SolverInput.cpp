@@ -11,6 +11,17 @@ namespace {
 
 using S = ParameterSpec;
 
+// The load times are held as a list (every rank, every solver reads them by index): past 10 million
+// steps (80 MB of times) a deck is a typo or a dynamic problem, and 2e9 would take 16 GB before any check.
+int loadSteps(const ParameterValues& options, const std::string& file, const std::string& sp) {
+  constexpr double kMaxLoadSteps = 1.0e7;
+  const double n = options.get("Number of Load Steps");
+  if (n > kMaxLoadSteps)
+    fail(file, sp, "'Number of Load Steps' = " + numberText(n) + " is more than 10000000 (the load times alone "
+                   "would take " + numberText(8.0 * n) + " bytes); use fewer steps or a Verlet solver");
+  return static_cast<int>(n);
+}
+
 // Peridigm's QuasiStatic may list its load times ("Time Steps") instead of Final Time and a step count.
 std::vector<double> timeList(const ParameterValues& q, const std::string& file, const std::string& qp) {
   std::vector<double> times;
@@ -85,7 +96,7 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
     return spec;
   }
   if (!spec.options.has("Number of Load Steps")) fail(file, sp, "missing required parameter 'Number of Load Steps'");
-  const int n = static_cast<int>(spec.options.get("Number of Load Steps"));
+  const int n = loadSteps(spec.options, file, sp);
   spec.times = {t0};
   for (int k = 1; k <= n; ++k) spec.times.push_back(t0 + (t1 - t0) * k / n);  // Peridigm's t0 + k (t1 - t0) / n
   return spec;

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """User-facing error tests: each bad deck must make `periforge` exit non-zero with one line on stderr
 that names the input file and the offending parameter, without a crash (no signal, no abort) and
-without writing an Exodus or CSV file that could pass for a result.
+without writing an Exodus or CSV file that could pass for a result, within 30 s.
 
 usage: run_error_cases.py PERIFORGE_EXE BASE_DECK
 BASE_DECK is a valid 3D deck (test/regression/bar/bar_3d.xml); every case edits a copy of it.
@@ -11,6 +11,7 @@ import re
 import subprocess
 import sys
 import tempfile
+import time
 
 CASES = [
     # name, (pattern, replacement) edits, words the message must contain
@@ -100,6 +101,33 @@ CASES = [
     ("unknown material model",
      [('<Parameter name="Material Model" type="string" value="Elastic"/>', '<Parameter name="Material Model" type="string" value="Elastc"/>')],
      ["Elastc"]),
+    # Memory and size guard: refused from the deck's estimate before the cloud is built (docs/input.md,
+    # "Size and memory guard"), in well under a second instead of std::bad_alloc after tens of seconds.
+    ("spacing that makes more points than 32-bit ids",
+     [('<Parameter name="Spacing" type="double" value="0.002"/>', '<Parameter name="Spacing" type="double" value="1e-7"/>')],
+     ["Discretization", "32-bit", "'Spacing'"]),
+    ("Number Points beyond 32-bit ids",
+     [(r'<Parameter name="Type" type="string" value="Box With Holes"/>.*?<Parameter name="Fictitious Layers" type="string" value="Left Right"/>',
+       '<Parameter name="Type" type="string" value="PdQuickGrid"/>\n    <ParameterList name="TensorProduct3DMeshGenerator">\n'
+       '      <Parameter name="X Origin" type="double" value="0"/><Parameter name="Y Origin" type="double" value="0"/>\n'
+       '      <Parameter name="Z Origin" type="double" value="0"/><Parameter name="X Length" type="double" value="0.1"/>\n'
+       '      <Parameter name="Y Length" type="double" value="0.1"/><Parameter name="Z Length" type="double" value="0.001"/>\n'
+       '      <Parameter name="Number Points X" type="int" value="100000"/><Parameter name="Number Points Y" type="int" value="100000"/>\n'
+       '      <Parameter name="Number Points Z" type="int" value="1"/>\n    </ParameterList>'),
+      (r'  <ParameterList name="Boundary Conditions">.*?\n  </ParameterList>\n', '')],
+     ["Discretization", "32-bit", "'Number Points'"]),
+    ("horizon as long as the bar",
+     [('<Parameter name="Horizon" type="double" value="0.00603"/>', '<Parameter name="Horizon" type="double" value="1.0"/>')],
+     ["Discretization", "bonds", "'Horizon'"]),
+    ("Maximum Memory below the estimate",
+     [('<ParameterList name="Discretization">', '<Parameter name="Maximum Memory" type="double" value="1e6"/>\n  <ParameterList name="Discretization">')],
+     ["'Maximum Memory' (1 MB)", "'Spacing'"]),
+    ("load steps whose times would fill the memory",
+     [('<Parameter name="Number of Load Steps" type="int" value="2"/>', '<Parameter name="Number of Load Steps" type="int" value="2000000000"/>')],
+     ["Number of Load Steps", "10000000"]),
+    ("load steps beyond an int",
+     [('<Parameter name="Number of Load Steps" type="int" value="2"/>', '<Parameter name="Number of Load Steps" type="int" value="100000000000"/>')],
+     ["Number of Load Steps", "100000000000"]),
 ]
 
 
@@ -117,7 +145,9 @@ def main(exe, base):
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "bad.xml")
             open(path, "w").write(deck)
+            start = time.monotonic()
             p = subprocess.run([exe, path], cwd=d, capture_output=True, text=True, timeout=300)
+            elapsed = time.monotonic() - start
             lines = [l for l in p.stderr.splitlines() if l.strip()]
             msg = lines[-1] if lines else ""
             outputs = [f for f in os.listdir(d) if f.endswith((".e", ".csv"))]
@@ -131,6 +161,8 @@ def main(exe, base):
             for w in words:
                 if w not in msg:
                     problems.append(f"message does not contain '{w}'")
+            if elapsed > 30.0:
+                problems.append(f"took {elapsed:.1f} s (want < 30 s)")
             if outputs:
                 problems.append(f"wrote output files {outputs}")
             status = "ok" if not problems else "FAIL: " + "; ".join(problems)
