@@ -6,6 +6,7 @@
 
 #include "core/Expression.hpp"
 #include "core/InputError.hpp"
+#include "parallel/Collective.hpp"
 
 namespace pf {
 
@@ -48,10 +49,14 @@ void Model::internalForce(const double* u, double* f) {
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
-  for (const BlockModel& b : blocks_) {
-    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
-    b.material->computeForce(view, yOverlap_.data(), state_, fOverlap_.data());
-  }
+  // A material that fails on one rank (a return mapping that does not converge there) must fail on every
+  // rank before the collective exportAdd, or the others wait in it forever: one allreduce per evaluation.
+  collectively(layout_->comm(), [&] {
+    for (const BlockModel& b : blocks_) {
+      FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+      b.material->computeForce(view, yOverlap_.data(), state_, fOverlap_.data());
+    }
+  });
   layout_->exportAdd(fOverlap_.data(), f, 3);
 }
 

@@ -47,7 +47,7 @@ class Model {
   int numDofs() const { return 3 * numOwned(); }
 
   // Internal force density f (3 per owned node) for displacements u (3 per owned node). Computes the
-  // materials' trial state. Throws ConstitutiveFailure if a material cannot update.
+  // materials' trial state. Throws ConstitutiveFailure on every rank if a material cannot update on any.
   void internalForce(const double* u, double* f);
   // df = (d f / d u) du at u, exactly, if every material has an exact tangent (returns false otherwise).
   bool forceDerivative(const double* u, const double* du, double* df);
