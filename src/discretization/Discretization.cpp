@@ -178,11 +178,6 @@ void forEachDataLine(const std::string& full, const std::string& inputFile, cons
   }
 }
 
-std::string resolvePath(const std::string& name, const std::string& inputDir) {
-  if (name.empty() || name[0] == '/' || inputDir.empty() || inputDir == ".") return name;
-  return inputDir + "/" + name;
-}
-
 PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& inputFile) {
   using T = DiscretizationSpec::Type;
   PointCloud c;

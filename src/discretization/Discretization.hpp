@@ -30,9 +30,6 @@ struct PointCloud {                     // every rank builds the same cloud, det
 // inputFile names the deck in error messages (a mesh file's bad line, holes covering everything).
 PointCloud buildDiscretization(const DiscretizationSpec& spec, const std::string& inputFile);
 
-// A deck-relative file name made usable from the working directory.
-std::string resolvePath(const std::string& name, const std::string& inputDir);
-
 // Reads a data file (mesh or node-set ids): calls use(text, where) for every line that is not blank
 // once '#' comments are cut, where = "full:line". A file that cannot be opened is an InputError
 // "inputFile: path: cannot open <what> file 'full'".

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "Input.hpp"
 #include "Sections.hpp"
 
 namespace pf {
@@ -99,7 +100,7 @@ std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string
       s.kind = NodeSetSpec::Kind::Ids;
     } else {
       s.kind = NodeSetSpec::Kind::File;
-      if (!s.text.empty() && s.text[0] != '/' && !dir.empty() && dir != ".") s.text = dir + "/" + s.text;
+      s.text = resolvePath(s.text, dir);
     }
     out.push_back(s);
   }

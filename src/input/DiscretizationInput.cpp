@@ -1,6 +1,7 @@
 // The "Discretization" list -> DiscretizationSpec.
 #include <cmath>
 
+#include "Input.hpp"
 #include "Sections.hpp"
 
 namespace pf {
@@ -50,10 +51,9 @@ std::vector<HoleSpec> parseHoles(const PL& holes, bool box, const std::string& f
   return out;
 }
 
-void parseGenerator(const PL& d, DiscretizationSpec& s, const std::string& file) {
+// v: the list's values, read against discretizationSpecs of the generator's type.
+void parseGenerator(const PL& d, const ParameterValues& v, DiscretizationSpec& s, const std::string& file) {
   const bool box = s.type == DiscretizationSpec::Type::BoxWithHoles;
-  const ParameterValues v = readList(d, discretizationSpecs(box ? "Box With Holes" : "Rectangle With Holes"),
-                                     {"Holes"}, file, "Discretization");
   const char* ax[3] = {"X", "Y", "Z"};
   for (int a = 0; a < (box ? 3 : 2); ++a) {
     s.origin[a] = v.get(std::string(ax[a]) + " Origin");
@@ -133,10 +133,13 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   const std::string type = getText(d, "Type", "");
   if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
     fail(file, path, "'Type' = '" + type + "' is not one of " + joinNames(kTypes));
+  const std::vector<std::string> sublists = type == "PdQuickGrid" ? std::vector<std::string>{"TensorProduct3DMeshGenerator"}
+                                           : type == "Text File"   ? std::vector<std::string>{}
+                                                                   : std::vector<std::string>{"Holes"};
+  const ParameterValues v = readList(d, discretizationSpecs(type), sublists, file, path);
   DiscretizationSpec s;
   if (type == "PdQuickGrid") {
     s.type = DiscretizationSpec::Type::QuickGrid;
-    checkList(d, discretizationSpecs(type), {"TensorProduct3DMeshGenerator"}, file, path);
     const ParameterValues g = readList(requireSublist(d, "TensorProduct3DMeshGenerator", file, path), quickGridSpecs(),
                                        {}, file, path + "/TensorProduct3DMeshGenerator");
     const char* ax[3] = {"X", "Y", "Z"};
@@ -147,17 +150,14 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
     }
   } else if (type == "Text File") {
     s.type = DiscretizationSpec::Type::TextFile;
-    checkList(d, discretizationSpecs(type), {}, file, path);
-    const std::string name = getText(d, "Input Mesh File", "");
-    s.meshFile = name.empty() || name[0] == '/' || dir.empty() || dir == "." ? name : dir + "/" + name;
+    s.meshFile = resolvePath(v.text("Input Mesh File"), dir);
   } else {
     s.type = type == "Box With Holes" ? DiscretizationSpec::Type::BoxWithHoles
                                       : DiscretizationSpec::Type::RectangleWithHoles;
-    parseGenerator(d, s, file);
+    parseGenerator(d, v, s, file);
   }
-  const ParameterValues common = readList(d, discretizationSpecs(type), {"TensorProduct3DMeshGenerator", "Holes"}, file, path);
-  s.influence = influenceFromName(common.text("Influence Function"), file + ": " + path);
-  s.partialVolume = common.flag("Partial Volume");
+  s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path);
+  s.partialVolume = v.flag("Partial Volume");
   if (s.partialVolume && s.type == DiscretizationSpec::Type::TextFile)
     fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "
                      "Holes): a Text File discretization has no cells to intersect with the horizon");

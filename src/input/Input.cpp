@@ -46,6 +46,11 @@ std::string inputDirectory(const std::string& path) {
   return path.substr(0, slash);
 }
 
+std::string resolvePath(const std::string& name, const std::string& inputDir) {
+  if (name.empty() || name[0] == '/' || inputDir.empty() || inputDir == ".") return name;
+  return inputDir + "/" + name;
+}
+
 Teuchos::RCP<Teuchos::ParameterList> readInput(const std::string& path) {
   {
     std::ifstream probe(path);

@@ -14,4 +14,7 @@ Teuchos::RCP<Teuchos::ParameterList> readInput(const std::string& path);
 // Directory holding the deck ("." if none): relative file names in the deck resolve against it.
 std::string inputDirectory(const std::string& path);
 
+// A deck-relative file name (mesh, node-set ids) made usable from the working directory.
+std::string resolvePath(const std::string& name, const std::string& inputDir);
+
 }  // namespace pf

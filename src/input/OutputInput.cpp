@@ -10,19 +10,22 @@ namespace {
 
 using S = ParameterSpec;
 
-// The core's fields and every registered model's declared outputs.
-std::vector<std::string> knownVariables() {
-  std::vector<std::string> n = coreVectorFields();
-  for (const auto* list : {&coreScalarFields(), &globalFields()}) n.insert(n.end(), list->begin(), list->end());
-  for (const MaterialEntry& e : materialRegistry())
-    for (const std::string& o : e.outputs)
-      if (std::find(n.begin(), n.end(), o) == n.end()) n.push_back(o);
-  return n;
+// The core's fields and every registered model's declared outputs (the registries are fixed: built once).
+const std::vector<std::string>& knownVariables() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n = coreVectorFields();
+    for (const auto* list : {&coreScalarFields(), &globalFields()}) n.insert(n.end(), list->begin(), list->end());
+    for (const MaterialEntry& e : materialRegistry())
+      for (const std::string& o : e.outputs)
+        if (std::find(n.begin(), n.end(), o) == n.end()) n.push_back(o);
+    return n;
+  }();
+  return names;
 }
 
 void checkVariable(const std::string& var, bool dynamic, const std::string& file, const std::string& path,
                    const std::string& param) {
-  const std::vector<std::string> known = knownVariables();
+  const std::vector<std::string>& known = knownVariables();
   if (std::find(known.begin(), known.end(), var) == known.end())
     fail(file, path, "'" + param + "' names unknown output variable '" + var + "'");
   // Peridigm's Verlet integrator defines the acceleration (f + b)/rho it steps with; the quasi-static
