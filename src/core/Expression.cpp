@@ -5,6 +5,7 @@
 #include <RTC_FunctionRTC.hh>
 
 #include "InputError.hpp"
+#include "RtcFunctions.hpp"
 
 namespace pf {
 
@@ -58,26 +59,43 @@ std::string oneLine(std::string s) {
 
 Expression::Expression(const std::string& text, const std::string& context) : text_(text), context_(context) {
   if (text.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(context + ": expression is empty");
-  for (const std::string& id : identifiers(text))
+  for (const std::string& id : identifiers(text)) {
     if (id == "x" || id == "y" || id == "z") dependsOnSpace_ = true;
+    const std::string refused = refusedRtcFunction(id);
+    if (!refused.empty()) throw InputError(context + ": expression '" + oneLine(text) + "': " + refused);
+  }
   std::string body = text;
   if (!assignsValue(body)) {
     body = "value = " + body;
   }
   const std::size_t last = body.find_last_not_of(" \t\r\n");
   if (body[last] != ';' && body[last] != '}') body += ";";
+  installCheckedRtcFunctions();
   fn_ = std::make_unique<PG_RuntimeCompiler::Function>(5, "pf_expression");
   for (const char* v : {"x", "y", "z", "t", "value"}) fn_->addVar("double", v);
   if (!fn_->addBody(body))
     throw InputError(context + ": cannot compile expression '" + oneLine(text) + "': " + oneLine(fn_->getErrors()));
-  // A trial run catches run-time errors (e.g. an unknown function) at input time, not mid-solve.
+  // The compiler folds constant calls: sqrt(-1) written as such fails here, once, for every point.
+  const std::string folded = takeRtcDomainError();
+  if (!folded.empty()) throw InputError(context + ": expression '" + oneLine(text) + "': " + folded);
+  // A trial run catches run-time errors (e.g. an unknown function) at input time, not mid-solve. Its
+  // value does not matter: (0, 0, 0, 0) need not lie in the body or the run, so NaN there is no error.
   (*this)(0.0, 0.0, 0.0, 0.0);
 }
 
 Expression::~Expression() = default;
 
-double Expression::operator()(double x, double y, double z, double t) const {
+double Expression::operator()(double x, double y, double z, double t) const { return evaluate(x, y, z, t, nullptr); }
+
+std::string Expression::whyNotFinite(double x, double y, double z, double t) const {
+  std::string why;
+  evaluate(x, y, z, t, &why);
+  return why;
+}
+
+double Expression::evaluate(double x, double y, double z, double t, std::string* why) const {
   std::lock_guard<std::mutex> lock(mutex_);
+  takeRtcDomainError();  // a stale reason from another expression on this thread is not ours
   fn_->varValueFill(0, x);
   fn_->varValueFill(1, y);
   fn_->varValueFill(2, z);
@@ -86,6 +104,8 @@ double Expression::operator()(double x, double y, double z, double t) const {
   if (!fn_->execute())
     throw InputError(context_ + ": cannot evaluate expression '" + oneLine(text_) + "': " +
                      oneLine(fn_->getErrors()));
+  const std::string domain = takeRtcDomainError();
+  if (why) *why = domain;
   return fn_->getValueOfVar("value");
 }
 

@@ -16,6 +16,7 @@ struct Influence {
   enum Kind { One, ParabolicDecay, Gaussian, UserDefined };
   Kind kind = One;
   std::string expression;                                   // UserDefined only
+  std::string context;  // where it was given, for errors, e.g. "input.xml: Discretization"
   std::shared_ptr<PG_RuntimeCompiler::Function> function;  // compiled expression, UserDefined only
   Influence(Kind k = One) : kind(k) {}
   bool operator==(Kind k) const { return kind == k; }
@@ -23,7 +24,8 @@ struct Influence {
 
 Influence influenceFromName(const std::string& name, const std::string& inputFile);
 // Not thread-safe for UserDefined (the compiled function keeps its variables as state); it is called
-// once per bond at set-up.
+// once per bond at set-up. A UserDefined value that is not finite is an InputError naming zeta, the
+// horizon and, for an argument outside a function's domain, the call (e.g. "sqrt(-1) is undefined").
 double influenceValue(const Influence& f, double r, double horizon);
 
 }  // namespace pf

@@ -143,7 +143,9 @@ void requireFiniteLoad(const Model& model, const NodalLoad& load, double t) {
   char where[200];
   std::snprintf(where, sizeof where, " is %s at (x, y, z, t) = (%g, %g, %g, %g)",
                 out[3] == 0 ? "nan" : (out[3] > 0 ? "inf" : "-inf"), out[0], out[1], out[2], t);
-  throw InputError(load.value->context() + ": '" + load.value->text() + "'" + where);
+  // Every rank evaluates the same expression at the same point, so every rank names the same cause.
+  const std::string why = load.value->whyNotFinite(out[0], out[1], out[2], t);
+  throw InputError(load.value->context() + ": '" + load.value->text() + "'" + where + (why.empty() ? "" : ": " + why));
 }
 
 }  // namespace pf

@@ -14,6 +14,7 @@
 #include "discretization/NeighborSearch.hpp"
 #include "discretization/PartialVolume.hpp"
 #include "discretization/SpaceFillingCurve.hpp"
+#include "parallel/Collective.hpp"
 #include "parallel/CommunicatorImpl.hpp"
 
 namespace pf {
@@ -97,7 +98,8 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
   buildFamilies(pts, numOwned_, h, family_, cell);
-  setInfluence(family_, h, influence, cell != nullptr);
+  // A user-defined influence function can fail (not finite) at some bonds, so on some ranks only.
+  collectively(comm_, [&] { setInfluence(family_, h, influence, cell != nullptr); });
 
   // Keep only candidates that some bond reaches; candidate order is preserved so rows stay sorted.
   std::vector<int> ghostIndex(candidates.size(), -1);

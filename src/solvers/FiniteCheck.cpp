@@ -38,6 +38,8 @@ int firstNonFiniteNode(const Model& model, const std::vector<double>& x) {
 void requireFinite(const Model& model, const CheckPoint& at, const char* what, const std::vector<double>& x,
                    double localNorm) {
   if (finiteEverywhere(model, localNorm)) return;
+  // A boundary condition that is not finite at this time is the likeliest cause: name its expression.
+  model.requireFiniteLoads(at.time);
   // Smallest id over ranks as a max of -id (the reductions are on doubles; ids are exact below 2^53).
   const int local = firstNonFiniteNode(model, x);
   const double neg = model.max(local > 0 ? -static_cast<double>(local) : -std::numeric_limits<double>::max());

@@ -20,8 +20,9 @@ struct CheckPoint {
 // True when localNorm is finite on every rank (collective: every rank must call it).
 bool finiteEverywhere(const Model& model, double localNorm);
 
-// Collective. When localNorm is non-finite on some rank, throws SolverFailure naming the step, time and
-// the first node (global id, coordinates) whose value in x (3 per owned node) is not finite.
+// Collective. When localNorm is non-finite on some rank, throws InputError naming a boundary condition
+// that is not finite at the time, else SolverFailure naming the step, time and the first node (global
+// id, coordinates) whose value in x (3 per owned node) is not finite.
 void requireFinite(const Model& model, const CheckPoint& at, const char* what, const std::vector<double>& x,
                    double localNorm);
 

@@ -63,6 +63,9 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
   for (int step = 1; step <= steps; ++step) {
     const auto start = Clock::now();
     const double tA = times[step - 1], tB = times[step], dt = tB - tA;
+    // A condition that is not finite at the step's end fails now, naming its expression, rather than
+    // after the solver has spent its iterations (or NOX its step cuts) on a NaN load.
+    model.requireFiniteLoads(tB);
     const StepStats s = solveStep(u, duPrev, tA, tB);
     model.internalForce(u.data(), f.data());  // f for output; the state is committed already
     double probe = 0.0;  // non-finite iff some u, v or f is: nothing non-finite is reported

@@ -28,6 +28,14 @@ INITIAL_INF = ('<ParameterList name="Boundary Conditions">',
                '<Parameter name="Node Set" type="string" value="All"/><Parameter name="Coordinate" type="string" value="x"/>'
                '<Parameter name="Value" type="string" value="1.0/(t-t)"/></ParameterList>')
 NAN_AT_HALF = ('value="1.0e-3*x*t"', 'value="1.0e-3*x*t/(t-0.5)*(t-0.5)"')
+SQRT_AT_ONE = ('value="1.0e-3*x*t"', 'value="1.0e-3*x*t*sqrt(0.6-t)"')
+ASIN_IN_SPACE = ('value="-0.3e-3*(y-0.01)*t/1.0e-5"', 'value="asin(x*500)*t"')
+SQRT_MID_RUN = ('value="-0.3e-3*(y-0.01)*t/1.0e-5"', 'value="-0.3e-3*(y-0.01)*t/1.0e-5*sqrt(5.0e-6-t)"')
+LOG_CONSTANT = ('value="1.0e-3*x*t"', 'value="1.0e-3*x*t*log(-1.0)"')
+SQRT_INFLUENCE = ('<Parameter name="Spacing" type="double" value="0.002"/>',
+                  '<Parameter name="Spacing" type="double" value="0.002"/>'
+                  '<Parameter name="Influence Function" type="string" value="sqrt(zeta-0.003)"/>')
+PRINTF = ('value="1.0e-3*x*t"', 'value="printf(t)*0.0"')
 
 CASES = [
     # name, base deck, edits, mesh text (Text File decks) or None, rank counts, want exit 0, words
@@ -42,10 +50,28 @@ CASES = [
     ("Verlet Fixed dt 10x allowed: blows up", "bar/bar_verlet.xml",
      [VERLET_ALLOW, ('value="1.0e-5"/>\n    <ParameterList name="Verlet">', 'value="2.0e-4"/>\n    <ParameterList name="Verlet">')],
      None, (1, 2), False, ["solver failed", "Verlet: non-finite", "at step 74 (t = 0.0001554) at node 79 (0.0785, 0.0005, 0)"]),
-    ("ADR residual NaN at t = 0.5", "bar/bar_3d.xml", [NAN_AT_HALF], None, (1, 2), False,
-     ["solver failed", "adaptive dynamic relaxation: non-finite residual at step 1 (t = 0.5) at node 1 (0.001, 0.001, 0.001)"]),
-    ("NOX residual NaN at t = 0.5", "bar/bar_3d_nox.xml", [NAN_AT_HALF], None, (1,), False,
-     ["solver failed", "non-finite residual at step 1 (t = 0.5) at node 1 (0.001, 0.001, 0.001)"]),
+    # A load that is not finite at a step's end is named before the quasi-static solver spends its
+    # iterations (NOX: its step cuts) on it.
+    ("ADR boundary value NaN at t = 0.5", "bar/bar_3d.xml", [NAN_AT_HALF], None, (1, 2), False,
+     ["input error", "Boundary Conditions/Left X/Value", "is nan at (x, y, z, t) = (-0.007, 0.001, 0.001, 0.5)"]),
+    ("NOX boundary value NaN at t = 0.5", "bar/bar_3d_nox.xml", [NAN_AT_HALF], None, (1,), False,
+     ["input error", "Boundary Conditions/Left X/Value", "is nan at (x, y, z, t) = (-0.007, 0.001, 0.001, 0.5)"]),
+    # Issue 15 part 2: out-of-domain arguments made Pamgen's RTCompiler abort (exit 134, a backtrace).
+    ("ADR sqrt of a negative at t = 1", "bar/bar_3d.xml", [SQRT_AT_ONE], None, (1, 2), False,
+     ["input error", "Boundary Conditions/Left X/Value", "is nan at (x, y, z, t) = (-0.007, 0.001, 0.001, 1)",
+      "sqrt(-0.4) is undefined"]),
+    ("Verlet asin out of range in space", "bar/bar_verlet.xml", [ASIN_IN_SPACE], None, (1, 2), False,
+     ["input error", "Boundary Conditions/Left Y/Value", "t) = (-0.0035, 0.0005, 0, 0)", "asin(-1.75) is undefined"]),
+    ("Verlet sqrt of a negative mid-run", "bar/bar_verlet.xml", [SQRT_MID_RUN], None, (1, 2), False,
+     ["input error", "Boundary Conditions/Left Y/Value", "t) = (-0.0035, 0.0005, 0, 5.05e-06)",
+      "sqrt(-5e-08) is undefined"]),
+    ("constant log of a negative", "bar/bar_3d.xml", [LOG_CONSTANT], None, (1, 2), False,
+     ["input error", "Boundary Conditions/Left X/Value", "log(-1) is undefined"]),
+    ("influence function sqrt of a negative", "bar/bar_3d.xml", [SQRT_INFLUENCE], None, (1, 2), False,
+     ["input error", "Discretization", "'Influence Function' = 'sqrt(zeta-0.003)' is nan at zeta = 0.002",
+      "sqrt(-0.001) is undefined"]),
+    ("printf in a boundary value", "bar/bar_3d.xml", [PRINTF], None, (1, 2), False,
+     ["input error", "Boundary Conditions/Left X/Value", "'printf' is not available"]),
     ("horizon below the spacing", "bar/bar_3d.xml",
      [('name="Horizon" type="double" value="0.00603"', 'name="Horizon" type="double" value="0.001"')], None, (1, 2), False,
      ["input error", "Blocks/Bar", "Horizon", "spacing"]),
