@@ -66,11 +66,18 @@ std::vector<ParameterSpec> regionSpecs() {
 }
 
 std::vector<ParameterSpec> conditionSpecs() {
-  return {S::text("Type", "`Prescribed Displacement`, `Initial Displacement`, `Initial Velocity`, `Body Force`")
-              .need().oneOf({"Prescribed Displacement", "Initial Displacement", "Initial Velocity", "Body Force"}),
+  return {S::text("Type", "`Prescribed Displacement`, `Initial Displacement`, `Initial Velocity`, `Body Force`, "
+                          "`Pressure` (on the surface whose outer layer of points is the node set)")
+              .need().oneOf({"Prescribed Displacement", "Initial Displacement", "Initial Velocity", "Body Force",
+                             "Pressure"}),
           S::text("Node Set", "a node-set name (`All`: every node)").need(),
-          S::text("Coordinate", "`x`, `y` or `z`").need().oneOf({"x", "y", "z"}),
-          S::scalar("Value", "expression in `x`, `y`, `z` (reference coordinates) and `t`").need()};
+          S::text("Coordinate", "`x`, `y` or `z`; required, except for `Pressure` (which acts along the surface's "
+                                "normal)").oneOf({"x", "y", "z"}),
+          S::scalar("Value", "expression in `x`, `y`, `z` (reference coordinates) and `t`; for `Pressure` the "
+                             "pressure [Pa], positive pushing on the body").need(),
+          S::real("Layer Thickness", "`Pressure` only: thickness of the surface layer the node set holds; a point of "
+                                     "volume V stands for the area V / thickness. Default: the grid spacing")
+              .positive()};
 }
 
 std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string>& generated, const std::string& file,
@@ -124,11 +131,19 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
     c.kind = type == "Prescribed Displacement" ? K::PrescribedDisplacement
              : type == "Initial Displacement"  ? K::InitialDisplacement
              : type == "Initial Velocity"      ? K::InitialVelocity
-                                               : K::BodyForce;
+             : type == "Body Force"            ? K::BodyForce
+                                               : K::Pressure;
+    if (c.kind == K::Pressure) {
+      if (v.has("Coordinate")) fail(file, bpath, "'Coordinate' does not apply to a Pressure (it acts along the normal)");
+      c.layerThickness = v.get("Layer Thickness", 0.0);
+    } else {
+      if (!v.has("Coordinate")) fail(file, bpath, "missing required parameter 'Coordinate'");
+      if (v.has("Layer Thickness")) fail(file, bpath, "'Layer Thickness' applies to a Pressure only");
+      c.coordinate = v.text("Coordinate")[0] - 'x';
+    }
     c.nodeSet = v.text("Node Set");
     if (!nodeSets.count(c.nodeSet))
       fail(file, bpath, "'Node Set' = '" + c.nodeSet + "' is not defined in Boundary Conditions");
-    c.coordinate = v.text("Coordinate")[0] - 'x';
     c.value = std::make_shared<const Expression>(v.text("Value"), file + ": " + bpath + "/Value");
     out.push_back(c);
   }

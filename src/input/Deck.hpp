@@ -67,12 +67,13 @@ struct NodeSetSpec {
 };
 
 struct ConditionSpec {
-  enum class Kind { PrescribedDisplacement, InitialDisplacement, InitialVelocity, BodyForce };
+  enum class Kind { PrescribedDisplacement, InitialDisplacement, InitialVelocity, BodyForce, Pressure };
   std::string name;                   // the sub-list name
   Kind kind = Kind::PrescribedDisplacement;
   std::string nodeSet;                // a NodeSetSpec, a generated set or "All"
-  int coordinate = 0;                 // 0, 1, 2
+  int coordinate = 0;                 // 0, 1, 2 (not for Pressure)
   std::shared_ptr<const Expression> value;
+  double layerThickness = 0.0;        // Pressure: the surface layer's thickness; 0 = the grid spacing
 };
 
 struct SolverSpec {

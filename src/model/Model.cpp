@@ -99,12 +99,18 @@ namespace {
 // Evaluates a load's expression at its nodes; an expression without x, y, z is evaluated once.
 template <class Apply>
 void evaluate(const NodalLoad& load, const std::vector<double>& x, double t, Apply apply) {
+  const bool scaled = !load.factor.empty();
+  const std::size_t n = load.nodes.size();
   if (!load.value->dependsOnSpace()) {
     const double v = (*load.value)(0.0, 0.0, 0.0, t);
-    for (int i : load.nodes) apply(3 * i + load.coordinate, v);
+    for (std::size_t k = 0; k < n; ++k) apply(3 * load.nodes[k] + load.coordinate, scaled ? v * load.factor[k] : v);
     return;
   }
-  for (int i : load.nodes) apply(3 * i + load.coordinate, (*load.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t));
+  for (std::size_t k = 0; k < n; ++k) {
+    const int i = load.nodes[k];
+    const double v = (*load.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t);
+    apply(3 * i + load.coordinate, scaled ? v * load.factor[k] : v);
+  }
 }
 }  // namespace
 

@@ -24,11 +24,13 @@ struct BlockModel {
   std::shared_ptr<const Material> material;
 };
 
-// A displacement, velocity or body-force component imposed on owned nodes.
+// A displacement, velocity or body-force component imposed on owned nodes: value(x, t), times factor[k]
+// at nodes[k] when factor is given (a pressure's share per node and direction).
 struct NodalLoad {
   std::vector<int> nodes;  // owned-local indices
   int coordinate = 0;
   std::shared_ptr<const Expression> value;
+  std::vector<double> factor;  // empty: 1 at every node
 };
 
 class Model;
@@ -74,7 +76,8 @@ class Model {
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
   // Collective: throws InputError naming the condition if a prescribed displacement or body force is not
-  // finite at t at any of its nodes (checked once, at the start time: the stepping loop stays unchecked).
+  // finite at t at any of its nodes. Called at the start time, before each quasi-static load step and
+  // when a solver finds its state non-finite; applyPrescribed and bodyForce themselves stay unchecked.
   void requireFiniteLoads(double t) const;
 
   double sum(double v) const { return layout_->sum(v); }

@@ -10,6 +10,7 @@
 #include "core/Log.hpp"
 #include "core/MaterialEntry.hpp"
 #include "discretization/NodeSets.hpp"
+#include "model/PressureLoad.hpp"
 #include "parallel/Partition.hpp"
 
 namespace pf {
@@ -57,6 +58,27 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
     }
 }
 
+// A Text File mesh is 3D unless it is flat (every z = 0) and every block's material is 2D: then it is the
+// 2D discretization those materials need (the volumes in the file already hold the thickness).
+void adoptFlatTextMesh(PointCloud& cloud, const std::map<int, BlockSpec>& blocks) {
+  if (cloud.planar) return;
+  for (int p = 0; p < cloud.size(); ++p)
+    if (cloud.x[3 * p + 2] != 0.0) return;
+  for (const auto& kv : blocks)
+    if (!isPlanar(kv.second.material->dimension())) return;
+  cloud.planar = true;
+}
+
+// A Pressure condition as body forces on its layer (model/PressureLoad.hpp).
+void addPressure(Model& model, const ConditionSpec& bc, const std::vector<int>& nodes, double spacing,
+                 const std::string& inputFile) {
+  const std::string context = inputFile + ": Boundary Conditions/" + bc.name;
+  const double h = bc.layerThickness > 0 ? bc.layerThickness : spacing;
+  if (!(h > 0))
+    throw InputError(context + ": 'Layer Thickness' is needed: the discretization has no grid spacing to default to");
+  for (NodalLoad& l : pressureLoads(model, nodes, bc.value, h, context)) model.addBodyForce(std::move(l));
+}
+
 // Points without bonds carry no force and make the stiffness singular: one line, with the first of them.
 void warnPointsWithoutBonds(const Model& model, const std::string& inputFile) {
   double count = 0, first = -1e300;  // first: -(smallest 1-based id), reduced as a max
@@ -94,6 +116,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
                        " but no entry of Blocks names it");
     horizon[p] = it->second.horizon;
   }
+  adoptFlatTextMesh(pb.cloud, blocks);
   for (const auto& kv : blocks) {
     const bool planarMaterial = isPlanar(kv.second.material->dimension());
     if (planarMaterial && !cloud.planar)
@@ -141,6 +164,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
           pb.prescribedNodeSets.push_back(bc.nodeSet);
         break;
       case ConditionSpec::Kind::BodyForce: pb.model->addBodyForce(load); break;
+      case ConditionSpec::Kind::Pressure: addPressure(*pb.model, bc, load.nodes, cloud.spacing, inputFile); break;
       case ConditionSpec::Kind::InitialDisplacement: pb.initialDisplacements.push_back(load); break;
       case ConditionSpec::Kind::InitialVelocity: pb.initialVelocities.push_back(load); break;
     }

@@ -128,6 +128,21 @@ CASES = [
     ("load steps beyond an int",
      [('<Parameter name="Number of Load Steps" type="int" value="2"/>', '<Parameter name="Number of Load Steps" type="int" value="100000000000"/>')],
      ["Number of Load Steps", "100000000000"]),
+    # The Pressure condition (issue 16): acts along the surface normal, on a surface layer only.
+    ("Coordinate given for a Pressure",
+     [('<ParameterList name="Left X"><Parameter name="Type" type="string" value="Prescribed Displacement"/>',
+       '<ParameterList name="Left X"><Parameter name="Type" type="string" value="Pressure"/>')],
+     ["Boundary Conditions/Left X", "'Coordinate' does not apply to a Pressure"]),
+    ("Layer Thickness given for a displacement",
+     [('<ParameterList name="Left X"><Parameter name="Type" type="string" value="Prescribed Displacement"/>',
+       '<ParameterList name="Left X"><Parameter name="Type" type="string" value="Prescribed Displacement"/>'
+       '<Parameter name="Layer Thickness" type="double" value="0.001"/>')],
+     ["Boundary Conditions/Left X", "'Layer Thickness' applies to a Pressure only"]),
+    ("Pressure on points inside the body",
+     [('<ParameterList name="Left X">', '<ParameterList name="Push"><Parameter name="Type" type="string" value="Pressure"/>'
+       '<Parameter name="Node Set" type="string" value="All"/><Parameter name="Value" type="string" value="1.0e6"/></ParameterList>\n'
+       '    <ParameterList name="Left X">')],
+     ["Boundary Conditions/Push", "is not on a surface"]),
 ]
 
 

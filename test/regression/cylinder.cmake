@@ -1,0 +1,13 @@
+# Thick-walled cylinder under internal pressure, plane strain (issue 16): the Pressure condition and the
+# OSB models against Lame's elastic solution, the first-yield pressure and the limit pressure (lower side;
+# the collapse step is scripts/validate_cylinder). Bounds and their reasons: run_cylinder.py.
+foreach(np 1 2)
+  if(np EQUAL 1)
+    set(CYL_CMD ${PERIFORGE_EXE})
+  else()
+    set(CYL_CMD ${MPIRUN} -np 2 ${PERIFORGE_EXE})
+  endif()
+  add_test(NAME cylinder_pressure_np${np}
+           COMMAND ${PY} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cylinder/run_cylinder.py ${CYL_CMD})
+  set_tests_properties(cylinder_pressure_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 300)
+endforeach()
