@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <climits>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <set>
@@ -17,8 +18,44 @@ std::string trimmed(const std::string& s) {
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
+// A name or value as it can be printed in one line: bytes that are not printable text (control characters,
+// a NUL from "&#0;", bytes that are not UTF-8) shown as \xNN, so that a message is neither cut short at a
+// NUL nor garbled on the terminal.
+std::string printable(const std::string& s) {
+  std::string out;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    std::size_t n = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xE ? 2 : (c >> 3) == 0x1E ? 3 : 4;
+    // Tabs and line breaks are text (an expression may span lines); other control characters are not.
+    bool ok = n < 4 && i + n < s.size() && (c >= 0x20 || c == '\t' || c == '\n' || c == '\r') && c != 0x7F;
+    for (std::size_t k = 1; ok && k <= n; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
+    if (ok) {
+      out.append(s, i, n + 1);
+      i += n;
+    } else {
+      static const char* hex = "0123456789abcdef";
+      out += std::string("\\x") + hex[c >> 4] + hex[c & 0xF];
+    }
+  }
+  return out;
+}
+
+void checkText(const std::string& text, const std::string& what, const std::string& file, const std::string& path) {
+  const std::string shown = printable(text);
+  if (shown != text) fail(file, path, what + " '" + shown + "' holds bytes that are not text (shown as \\xNN)");
+}
+
+// The types Periforge reads (ListReader: double, int, bool, string; YAML's long long). Teuchos would
+// convert others (float, Array(double), ...) or fail with a message naming no parameter; none is a
+// parameter of any Periforge list.
+const std::set<std::string> kTypes = {"double", "int", "long long", "bool", "string"};
+
 void checkValue(const std::string& type, const std::string& raw, const std::string& file, const std::string& path,
                 const std::string& name) {
+  checkText(raw, "'" + name + "' =", file, path);
+  if (kTypes.count(type) == 0)
+    fail(file, path, "'" + name + "' has type '" + printable(type) + "'; Periforge reads 'double', 'int', 'bool' "
+                     "and 'string'");
   const std::string text = trimmed(raw);
   const std::string what = "'" + name + "' = '" + raw + "'";
   char* end = nullptr;
@@ -31,6 +68,12 @@ void checkValue(const std::string& type, const std::string& raw, const std::stri
     const long v = std::strtol(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0') fail(file, path, what + " is not an integer");
     if (errno == ERANGE || v < INT_MIN || v > INT_MAX) fail(file, path, what + " is out of the int range");
+  } else if (type == "bool") {
+    // Exactly what Teuchos accepts (case-insensitive, no blanks), named here instead of in its own words.
+    std::string upper;
+    for (char c : raw) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (upper != "TRUE" && upper != "FALSE" && upper != "YES" && upper != "NO" && upper != "1" && upper != "0")
+      fail(file, path, what + " is not a bool (true, false, yes, no, 1 or 0)");
   }
 }
 
@@ -41,6 +84,7 @@ void walk(const Teuchos::XMLObject& list, const std::string& file, const std::st
     if (c.getTag() != "Parameter" && c.getTag() != "ParameterList") continue;
     if (!c.hasAttribute("name")) continue;  // Teuchos reports it
     const std::string name = c.getAttribute("name");
+    checkText(name, c.getTag() == "Parameter" ? "parameter name" : "sub-list name", file, path);
     if (!names.insert(name).second)
       fail(file, path, "'" + name + "' is given twice (a deck names each parameter or sub-list once)");
     if (c.getTag() == "ParameterList") {
