@@ -129,8 +129,9 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
     if (!nodeSets.count(c.nodeSet))
       fail(file, bpath, "'Node Set' = '" + c.nodeSet + "' is not defined in Boundary Conditions");
     c.coordinate = v.text("Coordinate")[0] - 'x';
-    compileChecked([&] { c.value = std::make_shared<const Expression>(v.text("Value"), file + ": " + bpath + "/Value"); },
-                   file, bpath + "/Value", v.text("Value"));
+    const std::string where = bpath + "/Value";
+    compileChecked([&] { c.value = std::make_shared<const Expression>(v.text("Value"), file + ": " + where); }, file,
+                   where, v.text("Value"));
     out.push_back(c);
   }
   return out;

@@ -27,12 +27,13 @@ int loadSteps(const ParameterValues& options, const std::string& file, const std
 // one-step run that ends as "done" at t0 + dt: refused here, where both times and the step are known.
 void explicitSteps(const ParameterValues& options, double t0, double t1, const std::string& file,
                    const std::string& sp) {
-  if (!options.has("Fixed dt")) return;  // the solver's own stable step: it counts and checks the steps
+  if (!options.has("Fixed dt")) return;  // the stable step is only known to the solver, once the model is built
   constexpr double kMaxSteps = 2147483647.0;
   const double dt = options.get("Fixed dt"), steps = (t1 - t0) / dt;
   if (!(steps <= kMaxSteps))
     fail(file, sp, "'Fixed dt' = " + numberText(dt) + " makes " + numberText(steps) + " steps from " +
-                   numberText(t0) + " to " + numberText(t1) + ", more than 2147483647; check the times and their units");
+                   numberText(t0) + " to " + numberText(t1) +
+                   ", more than 2147483647; check the times and their units");
 }
 
 // Peridigm's QuasiStatic may list its load times ("Time Steps") instead of Final Time and a step count.

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "ListReader.hpp"
+#include "core/Words.hpp"
 
 namespace pf {
 
@@ -16,28 +17,6 @@ namespace {
 std::string trimmed(const std::string& s) {
   const std::size_t a = s.find_first_not_of(" \t\r\n"), b = s.find_last_not_of(" \t\r\n");
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
-}
-
-// A name or value as it can be printed in one line: bytes that are not printable text (control characters,
-// a NUL from "&#0;", bytes that are not UTF-8) shown as \xNN, so that a message is neither cut short at a
-// NUL nor garbled on the terminal.
-std::string printable(const std::string& s) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    std::size_t n = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xE ? 2 : (c >> 3) == 0x1E ? 3 : 4;
-    // Tabs and line breaks are text (an expression may span lines); other control characters are not.
-    bool ok = n < 4 && i + n < s.size() && (c >= 0x20 || c == '\t' || c == '\n' || c == '\r') && c != 0x7F;
-    for (std::size_t k = 1; ok && k <= n; ++k) ok = (static_cast<unsigned char>(s[i + k]) >> 6) == 0x2;
-    if (ok) {
-      out.append(s, i, n + 1);
-      i += n;
-    } else {
-      static const char* hex = "0123456789abcdef";
-      out += std::string("\\x") + hex[c >> 4] + hex[c & 0xF];
-    }
-  }
-  return out;
 }
 
 void checkText(const std::string& text, const std::string& what, const std::string& file, const std::string& path) {
