@@ -3,10 +3,10 @@
 
 Every mutation is one edit of a base deck's text: delete, duplicate or retype a parameter, replace a number
 (0, negative, huge, tiny, nan, inf, text, empty, int vs double), misname a model, solver, node set or output
-variable, corrupt the XML, break an expression, point a file name nowhere, ask for sizes the size guard must
-refuse. The choice is drawn from random.Random(SEED), so a (seed, count) pair always gives the same decks.
+variable, corrupt the XML, break an expression or give it an out-of-domain argument, point a file name
+nowhere, ask for sizes the size guard must refuse. The choice is drawn from random.Random(SEED), so a (seed, count) pair always gives the same decks.
 
-usage: generate_decks.py OUT_DIR [--count N] [--seed S] [--domain-errors]
+usage: generate_decks.py OUT_DIR [--count N] [--seed S]
   writes OUT_DIR/<case>.xml (plus the node-set file the plastic deck needs) and OUT_DIR/index.txt
   (one line per case: its name and what was changed). run_fuzz.py imports generate() instead.
 """
@@ -160,9 +160,8 @@ EXPRESSIONS = ["1.0/(t-t)", "t*", "foo(t)", "0.0/0.0", "", "value = ;", "x*y*z*t
                "value = x; value = y;", "pow(t, -1)", "t &amp;&amp;", "gamma(-t)", "atan2(0, 0)*t",
                "1.0e-3*x*t;;", "value = 1.0e-3*x*t", "zeta*t", "x = 3; value = x*t;", "1.0.0*t", "1e-400*t",
                "99999999999*t", "1ee5*t", ".e5*t"]
-# Out-of-domain arguments (sqrt, log, asin, acos) make Pamgen's RTCompiler assert (SIGABRT) when evaluated;
-# that is issue 15 part 2, fixed in src/core/Expression.cpp on its own branch. Left out of the default
-# set so that this test judges the input layer; --domain-errors adds them.
+# Out-of-domain arguments made Pamgen's RTCompiler assert (SIGABRT, exit 134) when evaluated, until issue 15
+# part 2 (src/core/Expression.cpp) turned them into input errors.
 DOMAIN_ERRORS = ["1.0e-3*x*sqrt(0.6-t)", "log(t-1)", "acos(2+t)", "asin(t-3)", "log10(-t)"]
 
 
@@ -244,7 +243,7 @@ def op_file(text, rng, els):
 
 OPERATORS = [(op_number, 5), (op_delete_param, 3), (op_delete_list, 2), (op_duplicate, 2), (op_type, 3),
              (op_bool, 1), (op_name, 4), (op_rename, 2), (op_expression, 3), (op_xml, 3), (op_size, 3),
-             (op_file, 1)]
+             (op_file, 1), (op_domain, 2)]
 
 
 def long_run(text):
@@ -259,11 +258,11 @@ def long_run(text):
     return 2e4 < steps <= 2 ** 31 - 1
 
 
-def generate(count=COUNT, seed=SEED, domain_errors=False):
+def generate(count=COUNT, seed=SEED):
     """[(case name, base deck, description, deck text)], count distinct mutations, the same every time."""
     rng = random.Random(seed)
     bases = [(b, open(os.path.join(HERE, b), encoding="utf-8").read()) for b in BASES]
-    ops = [op for op, weight in OPERATORS + ([(op_domain, 2)] if domain_errors else []) for _ in range(weight)]
+    ops = [op for op, weight in OPERATORS for _ in range(weight)]
     cases, seen = [], set()
     while len(cases) < count:
         base, text = bases[len(cases) % len(bases)]
@@ -296,11 +295,10 @@ def main():
     ap.add_argument("out")
     ap.add_argument("--count", type=int, default=COUNT)
     ap.add_argument("--seed", type=int, default=SEED)
-    ap.add_argument("--domain-errors", action="store_true", help="add out-of-domain sqrt/log/acos/asin values")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     with open(os.path.join(a.out, "index.txt"), "w") as index:
-        for name, base, desc, text in generate(a.count, a.seed, a.domain_errors):
+        for name, base, desc, text in generate(a.count, a.seed):
             write_case(a.out, name, text)
             index.write(f"{name}\t{base}\t{desc}\n")
 
