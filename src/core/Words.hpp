@@ -8,4 +8,9 @@ namespace pf {
 
 std::vector<std::string> splitWords(const std::string& s);
 
+// Text from a deck or a file as it can be printed in one line: bytes that are not printable text (control
+// characters, a NUL from "&#0;", bytes that are not UTF-8) shown as \xNN, so that an error message is neither
+// cut short at a NUL nor garbled on the terminal. Tabs and line breaks are kept (an expression may span lines).
+std::string printable(const std::string& s);
+
 }  // namespace pf

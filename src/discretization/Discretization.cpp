@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "DuplicatePoints.hpp"
 #include "core/InputError.hpp"
+#include "core/Words.hpp"
 
 namespace pf {
 
@@ -62,8 +64,9 @@ PointCloud textFile(const DiscretizationSpec& d, const std::string& file) {
     long b;
     std::string extra;
     if (!(ss >> x >> y >> z >> b >> v) || (ss >> extra))
-      fail(file, path, where + ": expected 'x y z block_id volume', got '" + line + "'");
-    if (b < 1) fail(file, path, where + ": block_id must be a positive integer (got " + std::to_string(b) + ")");
+      fail(file, path, where + ": expected 'x y z block_id volume', got '" + printable(line) + "'");
+    if (b < 1 || b > INT_MAX)  // (an id past an int would wrap into another block's)
+      fail(file, path, where + ": block_id must be a positive integer up to 2147483647 (got " + std::to_string(b) + ")");
     if (!(v > 0.0) || !std::isfinite(v)) fail(file, path, where + ": volume must be positive (got " + num(v) + ")");
     if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) fail(file, path, where + ": non-finite coordinate");
     pushPoint(c, x, y, z, v, static_cast<int>(b));

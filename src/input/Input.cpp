@@ -55,6 +55,9 @@ Teuchos::RCP<Teuchos::ParameterList> readInput(const std::string& path) {
   {
     std::ifstream probe(path);
     if (!probe) throw InputError(path + ": cannot open input file");
+    // (Teuchos would say "An empty XML std::string or file was specified!", or read an empty YAML deck.)
+    if ((probe >> std::ws).peek() == std::ifstream::traits_type::eof())
+      throw InputError(path + ": the input file is empty");
   }
   const bool yaml = endsWith(path, ".yaml") || endsWith(path, ".yml");
   try {

@@ -22,6 +22,20 @@ int loadSteps(const ParameterValues& options, const std::string& file, const std
   return static_cast<int>(n);
 }
 
+// An explicit solver's fixed step: (t1 - t0) / dt steps, counted in a long. Past 2^31 - 1 steps the deck
+// is a typo (a Final Time in the wrong unit, a dt of 1e-300), and past 2^63 the count overflows into a
+// one-step run that ends as "done" at t0 + dt: refused here, where both times and the step are known.
+void explicitSteps(const ParameterValues& options, double t0, double t1, const std::string& file,
+                   const std::string& sp) {
+  if (!options.has("Fixed dt")) return;  // the stable step is only known to the solver, once the model is built
+  constexpr double kMaxSteps = 2147483647.0;
+  const double dt = options.get("Fixed dt"), steps = (t1 - t0) / dt;
+  if (!(steps <= kMaxSteps))
+    fail(file, sp, "'Fixed dt' = " + numberText(dt) + " makes " + numberText(steps) + " steps from " +
+                   numberText(t0) + " to " + numberText(t1) +
+                   ", more than 2147483647; check the times and their units");
+}
+
 // Peridigm's QuasiStatic may list its load times ("Time Steps") instead of Final Time and a step count.
 std::vector<double> timeList(const ParameterValues& q, const std::string& file, const std::string& qp) {
   std::vector<double> times;
@@ -92,6 +106,7 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
   const double t1 = list.get("Final Time");
   if (!(t1 > t0)) fail(file, path, "'Final Time' (" + numberText(t1) + ") must exceed 'Initial Time' (" + numberText(t0) + ")");
   if (!entry.loadSteps) {
+    explicitSteps(spec.options, t0, t1, file, sp);
     spec.times = {t0, t1};
     return spec;
   }

@@ -2,11 +2,13 @@
 
 #include <cerrno>
 #include <climits>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <set>
 
 #include "ListReader.hpp"
+#include "core/Words.hpp"
 
 namespace pf {
 
@@ -17,8 +19,22 @@ std::string trimmed(const std::string& s) {
   return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
 }
 
+void checkText(const std::string& text, const std::string& what, const std::string& file, const std::string& path) {
+  const std::string shown = printable(text);
+  if (shown != text) fail(file, path, what + " '" + shown + "' holds bytes that are not text (shown as \\xNN)");
+}
+
+// The types Periforge reads (ListReader: double, int, bool, string; YAML's long long). Teuchos would
+// convert others (float, Array(double), ...) or fail with a message naming no parameter; none is a
+// parameter of any Periforge list.
+const std::set<std::string> kTypes = {"double", "int", "long long", "bool", "string"};
+
 void checkValue(const std::string& type, const std::string& raw, const std::string& file, const std::string& path,
                 const std::string& name) {
+  checkText(raw, "'" + name + "' =", file, path);
+  if (kTypes.count(type) == 0)
+    fail(file, path, "'" + name + "' has type '" + printable(type) + "'; Periforge reads 'double', 'int', 'bool' "
+                     "and 'string'");
   const std::string text = trimmed(raw);
   const std::string what = "'" + name + "' = '" + raw + "'";
   char* end = nullptr;
@@ -31,6 +47,12 @@ void checkValue(const std::string& type, const std::string& raw, const std::stri
     const long v = std::strtol(text.c_str(), &end, 10);
     if (text.empty() || *end != '\0') fail(file, path, what + " is not an integer");
     if (errno == ERANGE || v < INT_MIN || v > INT_MAX) fail(file, path, what + " is out of the int range");
+  } else if (type == "bool") {
+    // Exactly what Teuchos accepts (case-insensitive, no blanks), named here instead of in its own words.
+    std::string upper;
+    for (char c : raw) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (upper != "TRUE" && upper != "FALSE" && upper != "YES" && upper != "NO" && upper != "1" && upper != "0")
+      fail(file, path, what + " is not a bool (true, false, yes, no, 1 or 0)");
   }
 }
 
@@ -41,6 +63,7 @@ void walk(const Teuchos::XMLObject& list, const std::string& file, const std::st
     if (c.getTag() != "Parameter" && c.getTag() != "ParameterList") continue;
     if (!c.hasAttribute("name")) continue;  // Teuchos reports it
     const std::string name = c.getAttribute("name");
+    checkText(name, c.getTag() == "Parameter" ? "parameter name" : "sub-list name", file, path);
     if (!names.insert(name).second)
       fail(file, path, "'" + name + "' is given twice (a deck names each parameter or sub-list once)");
     if (c.getTag() == "ParameterList") {

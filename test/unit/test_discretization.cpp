@@ -124,6 +124,14 @@ TEST(Discretization, TextFileParsesAndRejectsBadLines) {
 
   d.set("Input Mesh File", std::string("no_such_mesh.txt"));
   EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, dir), kFile, "no_such_mesh.txt");
+
+  // Found by the fuzz test: a NUL byte cut the message short; a block id past an int wrapped into another.
+  pftest::writeTemp("pf_nulmesh.txt", std::string("0 0 0 1 0.5\n1 0 0 1 0.5") + '\0' + "\n");
+  d.set("Input Mesh File", std::string("pf_nulmesh.txt"));
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, dir), kFile, "got '1 0 0 1 0.5\\x00'");
+  pftest::writeTemp("pf_bigblock.txt", "0 0 0 99999999999 0.5\n");
+  d.set("Input Mesh File", std::string("pf_bigblock.txt"));
+  EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, dir), kFile, "up to 2147483647 (got 99999999999)");
 }
 
 // The paper reports 154 336 nodes for the plate with two fictitious layers. This is reproduced by a

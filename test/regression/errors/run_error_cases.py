@@ -143,6 +143,34 @@ CASES = [
        '<Parameter name="Node Set" type="string" value="All"/><Parameter name="Value" type="string" value="1.0e6"/></ParameterList>\n'
        '    <ParameterList name="Left X">')],
      ["Boundary Conditions/Push", "is not on a surface"]),
+    # Found by the fuzz test (test/fuzz, docs/verification.md): each ended in a signal, a library's message
+    # naming no parameter, a message cut short at a NUL, or a silently truncated run.
+    ("bool that is not a bool",
+     [('<Parameter name="Displacement" type="bool" value="true"/>', '<Parameter name="Displacement" type="bool" value="maybe"/>')],
+     ["Output/Output Variables", "'Displacement' = 'maybe'", "not a bool"]),
+    ("type Periforge does not read",
+     [('<Parameter name="Density" type="double"', '<Parameter name="Density" type="Array(double)"')],
+     ["Materials/Steel", "'Density'", "Array(double)"]),
+    ("NUL character in a value",
+     [('<Parameter name="Material" type="string" value="Steel"/>', '<Parameter name="Material" type="string" value="St&#0;eel"/>')],
+     ["Blocks/Bar", "'Material'", "St\\x00eel", "not text"]),
+    ("bytes that are not UTF-8 in a name",
+     [('<Parameter name="Density"', '<Parameter name="Dens\udcffity"')],
+     ["Materials/Steel", "parameter name", "Dens\\xffity", "not text"]),
+    ("empty input file", [(r"\A.*\Z", "")], ["the input file is empty"]),
+    ("number beyond the double range in an expression",
+     [(r'value="1\.0e-3\*x\*t"', 'value="1.0e400*x*t"')],
+     ["Boundary Conditions/Left X/Value", "'1.0e400' is out of range"]),
+    ("malformed number in an expression (SIGABRT in Pamgen before)",
+     [(r'value="1\.0e-3\*x\*t"', 'value="1.0.0e-3*x*t"')],
+     ["Boundary Conditions/Left X/Value", "'1.0.0e-3' is not a number"]),
+    ("malformed number in an influence function",
+     [('<ParameterList name="Discretization">', '<ParameterList name="Discretization">\n    <Parameter name="Influence Function" type="string" value="1..0/zeta"/>')],
+     ["Discretization/Influence Function", "'1..0' is not a number"]),
+    ("Verlet steps beyond 32 bits (ran one step and said done before)",
+     [(r'<Parameter name="Final Time" type="double" value="1.0"/>\s*<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<Parameter name="Final Time" type="double" value="1.0e12"/>\n    <ParameterList name="Verlet"><Parameter name="Fixed dt" type="double" value="1.0e-7"/></ParameterList>')],
+     ["Solver/Verlet", "'Fixed dt'", "1e+19 steps", "2147483647"]),
 ]
 
 
@@ -159,7 +187,7 @@ def main(exe, base):
             deck = new
         with tempfile.TemporaryDirectory() as d:
             path = os.path.join(d, "bad.xml")
-            open(path, "w").write(deck)
+            open(path, "wb").write(deck.encode("utf-8", "surrogateescape"))
             start = time.monotonic()
             p = subprocess.run([exe, path], cwd=d, capture_output=True, text=True, timeout=300)
             elapsed = time.monotonic() - start
