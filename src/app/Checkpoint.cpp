@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
@@ -34,8 +35,18 @@ std::string outputText(const OutputSpec& o) {
   return out;
 }
 
-// Long texts (a material's parameters) cut for the one-line message.
-std::string shortened(const std::string& text) { return text.size() <= 80 ? text : text.substr(0, 77) + "..."; }
+// The first differing "; "-separated piece of two fingerprint texts (a material's or a solver's parameter),
+// so that the one-line message names what changed rather than two long texts.
+std::pair<std::string, std::string> firstDifference(const std::string& theirs, const std::string& mine) {
+  std::size_t a = 0, b = 0;
+  for (;;) {
+    const std::size_t ea = std::min(theirs.find("; ", a), theirs.size()), eb = std::min(mine.find("; ", b), mine.size());
+    std::string pa = theirs.substr(a, ea - a), pb = mine.substr(b, eb - b);
+    if (pa != pb || ea == theirs.size() || eb == mine.size()) return {pa, pb};
+    a = ea + 2;
+    b = eb + 2;
+  }
+}
 
 // Per-point values in cloud order (ncomp per point) -> those of this rank's owned points.
 std::vector<double> ownedPart(const std::vector<double>& global, const Model& model, int ncomp, const std::string& name) {
@@ -82,7 +93,7 @@ std::vector<std::pair<std::string, std::string>> runFingerprint(const Deck& deck
   for (double x : problem.cloud.x) coordinates += x;
   items.emplace_back("coordinate sum", number(coordinates));
   for (const MaterialSpec& m : deck.materials)
-    items.emplace_back("material '" + m.name + "'", m.entry->model + ": " + valuesText(m.values));
+    items.emplace_back("material '" + m.name + "'", "Material Model = " + m.entry->model + "; " + valuesText(m.values));
   for (const BlockModel& b : model.blocks())
     items.emplace_back("block " + b.name, b.materialName + ", horizon " + number(b.horizon));
   std::string history;
@@ -90,7 +101,7 @@ std::vector<std::pair<std::string, std::string>> runFingerprint(const Deck& deck
     if (s.history) history += s.name + (s.where == Location::Node ? " (point) " : " (bond) ");
   items.emplace_back("history fields", history);
   for (const SolverSpec& s : deck.solvers)
-    items.emplace_back("solver list '" + s.listName + "'", s.type + ": " + valuesText(s.options) + number(s.times.size()) +
+    items.emplace_back("solver list '" + s.listName + "'", s.type + "; " + valuesText(s.options) + number(s.times.size()) +
                                                                " times from " + number(s.times.front()) + " to " +
                                                                number(s.times.back()));
   for (const OutputSpec& o : deck.outputs) items.emplace_back("output '" + o.filename + "'", outputText(o));
@@ -169,8 +180,10 @@ CheckpointData loadCheckpoint(const std::string& file, const Deck& deck, const P
     for (const auto& [item, text] : mine) {
       auto it = data.bytes.find("fingerprint/" + item);
       if (it == data.bytes.end()) throw InputError(foreign + "it has no " + item);
-      if (it->second != text)
-        throw InputError(foreign + item + " is '" + shortened(it->second) + "' there, '" + shortened(text) + "' here");
+      if (it->second != text) {
+        const auto [there, here] = firstDifference(it->second, text);
+        throw InputError(foreign + item + ": '" + there + "' there, '" + here + "' here");
+      }
     }
     if (theirs != mine.size()) throw InputError(foreign + "it has more materials, blocks, solver or output lists");
   });
