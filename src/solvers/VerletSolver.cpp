@@ -57,6 +57,13 @@ struct ForceTimer {
   }
 };
 
+// The acceleration the next half step uses: zero on prescribed components, (f + b) / rho elsewhere.
+void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& b,
+                         std::vector<double>& a) {
+  const std::vector<char>& fixed = model.prescribedMask();
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
+}
+
 }  // namespace
 
 double VerletSolver::stableTimeStep(const Model& model) {
@@ -80,13 +87,6 @@ void VerletSolver::check(const Model& model) const {
     throw InputError(opt_.where + ": " + msg + "; above " + std::to_string(static_cast<int>(kRefuseFactor)) +
                      " times it is refused unless 'Allow Unstable Time Step' is true");
   if (opt_.fixedDt > stable) warn(opt_.where + ": " + msg + "; the run may go unstable");
-}
-
-// The acceleration the next half step uses: zero on prescribed components, (f + b) / rho elsewhere.
-static void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& b,
-                         std::vector<double>& a) {
-  const std::vector<char>& fixed = model.prescribedMask();
-  for (std::size_t k = 0; k < a.size(); ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
 }
 
 void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
