@@ -124,17 +124,16 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
   if (!restartFile.empty()) from = std::make_unique<RestartPoint>(restartFrom(restartFile, deck, problem, u, v, restart));
   for (const auto& s : solvers) s->check(model);
   OutputFanout output(comm);
+  std::unique_ptr<Checkpointer> checkpointer;  // or null: no Restart list; the fanout calls it after each step
   try {
     for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
     for (const auto& m : output.managers)
       if (from) m->resumeFrom(restart);
     restart = CheckpointData();  // the copies of the output files are on disk again
-    std::unique_ptr<Checkpointer> checkpointer;
     if (deck.restart.given)
       checkpointer = std::make_unique<Checkpointer>(deck, problem, output.managers, from ? from->count : 0);
     output.checkpointer = checkpointer.get();
     solve(deck, solvers, problem, u, v, output, from.get(), checkpointer.get());
-    output.checkpointer = nullptr;
     output.finish();
   } catch (...) {
     const Outcome o = describe(std::current_exception());
