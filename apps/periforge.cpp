@@ -1,4 +1,5 @@
 // periforge input.xml|input.yaml — runs one peridynamic simulation (see README.md and docs/input.md).
+// periforge input.xml --restart checkpoint — continues the deck's run from a checkpoint of its Restart list.
 // periforge --estimate input.xml [--np N] — prints points, bonds and bytes per rank, allocates nothing.
 #include <cstdio>
 #include <cstdlib>
@@ -11,7 +12,8 @@
 
 namespace {
 
-const char* kUsage = "usage: periforge input.xml|input.yaml\n       periforge --estimate input.xml [--np N]\n";
+const char* kUsage =
+    "usage: periforge input.xml|input.yaml [--restart checkpoint]\n       periforge --estimate input.xml [--np N]\n";
 
 // --estimate: np is the run's rank count unless --np N names another; rank 0 alone answers.
 int estimate(int argc, char** argv, int rank, int size) {
@@ -39,11 +41,12 @@ int main(int argc, char** argv) {
   if (argc >= 2 && std::strcmp(argv[1], "--estimate") == 0)
     return estimate(argc, argv, rank, pf::Communicator::world().size());
   int code = 0;
-  if (argc != 2 || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
+  const bool restart = argc == 4 && std::strcmp(argv[2], "--restart") == 0;
+  if ((argc != 2 && !restart) || std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0) {
     if (rank == 0) std::fputs(kUsage, argc == 2 ? stdout : stderr);
     code = argc == 2 ? 0 : 2;
   } else {
-    code = pf::runSimulation(argv[1]);
+    code = pf::runSimulation(argv[1], restart ? argv[3] : "");
   }
   return code;
 }

@@ -14,6 +14,7 @@ class OutputFanout : public StepObserver {
  public:
   explicit OutputFanout(const Communicator& comm) : comm_(comm) {}
   std::vector<std::unique_ptr<OutputManager>> managers;
+  StepObserver* checkpointer = nullptr;  // or null; called after the managers, so a checkpoint holds the step's output
   void onStep(const StepReport& r, const std::vector<double>& u, const std::vector<double>& v,
               const std::vector<double>& f) override;
   void finish();                                                          // collective

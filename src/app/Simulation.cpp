@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "Checkpoint.hpp"
 #include "OutputFanout.hpp"
 #include "StopSignal.hpp"
 #include "core/InputError.hpp"
@@ -64,15 +65,31 @@ void initialState(const Problem& problem, double t0, std::vector<double>& u, std
 }
 
 // "Solver", or Peridigm's Solver1, Solver2, ... run in sequence, each continuing from the state
-// (displacement, velocity, material history) the previous one ended with.
+// (displacement, velocity, material history) the previous one ended with. A restart begins with the
+// checkpoint's solver list, after its step.
 void solve(const Deck& deck, const std::vector<std::unique_ptr<Solver>>& solvers, Problem& problem,
-           std::vector<double>& u, std::vector<double>& v, OutputFanout& output) {
+           std::vector<double>& u, std::vector<double>& v, OutputFanout& output, const RestartPoint* from,
+           Checkpointer* checkpointer) {
   Model& model = *problem.model;
-  for (std::size_t k = 0; k < solvers.size(); ++k) {
+  for (std::size_t k = from ? from->solver : 0; k < solvers.size(); ++k) {
     if (model.layout().rank() == 0 && solvers.size() > 1)
       std::printf("periforge: %s: solver %s\n", deck.solvers[k].listName.c_str(), solvers[k]->name().c_str());
+    if (from && k == from->solver) solvers[k]->resumeAfter(from->resume);
+    if (checkpointer) checkpointer->setSolver(k);
     solvers[k]->run(model, u, v, deck.solvers[k].times, output);
   }
+}
+
+// Collective: the checkpoint's state in place of the initial one; where the run goes on.
+RestartPoint restartFrom(const std::string& file, const Deck& deck, Problem& problem, std::vector<double>& u,
+                         std::vector<double>& v, CheckpointData& data) {
+  data = loadCheckpoint(file, deck, problem);
+  const RestartPoint at = applyCheckpoint(file, data, problem, u, v);
+  if (at.solver >= deck.solvers.size())  // the fingerprint has the solver lists: only a forged file gets here
+    throw InputError("restart: '" + file + "': no solver list " + std::to_string(at.solver + 1) + " in this deck");
+  if (problem.model->layout().rank() == 0)
+    std::printf("periforge: restart from %s after step %ld (t = %g)\n", file.c_str(), at.count - 1, at.resume.time);
+  return at;
 }
 
 void printDone(const OutputFanout& output, Clock::time_point start) {
@@ -86,7 +103,8 @@ void printDone(const OutputFanout& output, Clock::time_point start) {
 }
 
 // Throws on failure, after marking every output list's files as failed or interrupted.
-void run(const std::string& inputFile, const Communicator& comm, Clock::time_point start) {
+void run(const std::string& inputFile, const std::string& restartFile, const Communicator& comm,
+         Clock::time_point start) {
   const Deck deck = readDeck(inputFile);
   guardSize(deck, comm);  // before anything sized by the deck is allocated
   std::vector<std::unique_ptr<Solver>> solvers;  // made first: a bad solver list fails before the set-up
@@ -101,11 +119,21 @@ void run(const std::string& inputFile, const Communicator& comm, Clock::time_poi
   // Checks that need the model come before any output file is opened.
   std::vector<double> u(model.numDofs(), 0.0), v(model.numDofs(), 0.0);
   initialState(problem, deck.solvers.front().times.front(), u, v);
+  CheckpointData restart;
+  std::unique_ptr<RestartPoint> from;
+  if (!restartFile.empty()) from = std::make_unique<RestartPoint>(restartFrom(restartFile, deck, problem, u, v, restart));
   for (const auto& s : solvers) s->check(model);
   OutputFanout output(comm);
+  std::unique_ptr<Checkpointer> checkpointer;  // or null: no Restart list; the fanout calls it after each step
   try {
     for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
-    solve(deck, solvers, problem, u, v, output);
+    for (const auto& m : output.managers)
+      if (from) m->resumeFrom(restart);
+    restart = CheckpointData();  // the copies of the output files are on disk again
+    if (deck.restart.given)
+      checkpointer = std::make_unique<Checkpointer>(deck, problem, output.managers, from ? from->count : 0);
+    output.checkpointer = checkpointer.get();
+    solve(deck, solvers, problem, u, v, output, from.get(), checkpointer.get());
     output.finish();
   } catch (...) {
     const Outcome o = describe(std::current_exception());
@@ -117,12 +145,12 @@ void run(const std::string& inputFile, const Communicator& comm, Clock::time_poi
 
 }  // namespace
 
-int runSimulation(const std::string& inputFile) {
+int runSimulation(const std::string& inputFile, const std::string& restartFile) {
   const Communicator comm = Communicator::world();
   setPrintingRank(comm.rank() == 0);
   installStopHandlers();
   try {
-    run(inputFile, comm, Clock::now());
+    run(inputFile, restartFile, comm, Clock::now());
     return 0;
   } catch (...) {
     // Every rank reaches the same verdict (input is read by all; rank-local failures are agreed on

@@ -60,4 +60,12 @@ void StateStore::rollback() {
     if (kv.second.spec.history) kv.second.trial = kv.second.committed;
 }
 
+void StateStore::restoreCommitted(const std::string& name, const std::vector<double>& values) {
+  Field& f = field(name);
+  if (!f.spec.history || values.size() != f.committed.size())
+    throw std::logic_error("state field '" + name + "': cannot restore " + std::to_string(values.size()) + " values");
+  f.committed = values;
+  f.trial = values;
+}
+
 }  // namespace pf

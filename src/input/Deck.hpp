@@ -104,6 +104,13 @@ struct OutputSpec {
   std::shared_ptr<const Expression> appliedDisplacement;  // "Applied Displacement" condition's value
 };
 
+// The "Restart" list: write a checkpoint every `frequency` steps (docs/output.md, "Restart").
+struct RestartSpec {
+  bool given = false;                 // the deck has a Restart list
+  std::string checkpointFile;         // "Checkpoint Filename", default <first Output Filename>.restart
+  int frequency = 0;                  // after every step whose CSV step number is a multiple of it
+};
+
 struct Deck {
   std::string file;                   // as given on the command line (error messages name it)
   std::string directory;              // relative file names in the deck resolve against it
@@ -116,6 +123,7 @@ struct Deck {
   std::vector<ConditionSpec> conditions;
   std::vector<SolverSpec> solvers;    // run in sequence
   std::vector<OutputSpec> outputs;
+  RestartSpec restart;
 
   const MaterialSpec& material(const std::string& name) const;
   double maxHorizon() const;

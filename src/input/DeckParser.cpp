@@ -14,7 +14,7 @@ namespace {
 
 // Top-level sub-lists a deck may hold; Peridigm's numbered Solver<n>/Output<n> lists with n = 1, 2, ...
 std::vector<std::string> topLists(const PL& p, const std::string& file) {
-  std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions"};
+  std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart"};
   for (const std::string stem : {"Solver", "Output"}) {
     const std::vector<std::string> lists = numberedLists(p, stem);
     tops.insert(tops.end(), lists.begin(), lists.end());
@@ -81,6 +81,7 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
     deck.conditions = parseConditions(bcs, nodeSets, file);
   }
   deck.outputs = outputs(p, deck, nodeSets);
+  if (p.isSublist("Restart")) deck.restart = parseRestart(p.sublist("Restart"), file, deck.outputs);
   return deck;
 }
 

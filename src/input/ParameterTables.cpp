@@ -40,7 +40,8 @@ std::vector<ParameterTable> parameterTables() {
       {"condition", "Boundary Conditions/<name> (a condition)", conditionSpecs()},
       {"solver", "Solver (or Solver1, Solver2, ...)", solverListSpecs()},
       {"output", "Output (or Output1, Output2, ...)", outputSpecs()},
-      {"probe", "Output/Probes/<any name>", probeSpecs()}};
+      {"probe", "Output/Probes/<any name>", probeSpecs()},
+      {"restart", "Restart", restartSpecs()}};
   const std::size_t common = discretizationSpecs("").size();
   for (auto& [key, type] : std::vector<std::pair<std::string, std::string>>{
            {"text-file", "Text File"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"}})

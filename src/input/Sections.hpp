@@ -46,4 +46,8 @@ OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& 
                        const std::set<std::string>& nodeSets, const std::vector<ConditionSpec>& conditions,
                        bool dynamic);
 
+// Restart (after the output lists: its default file name is the first one's).
+std::vector<ParameterSpec> restartSpecs();
+RestartSpec parseRestart(const PL& r, const std::string& file, const std::vector<OutputSpec>& outputs);
+
 }  // namespace pf

@@ -59,7 +59,7 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
                            const std::vector<std::string>& nodalVectorNames,
                            const std::vector<std::string>& nodalScalarNames,
                            const std::vector<std::string>& elementScalarNames,
-                           const std::vector<std::string>& globalNames)
+                           const std::vector<std::string>& globalNames, bool append)
     : filename_(filename),
       numNodes_(blockIdPerNode.size()),
       planar_(planar),
@@ -92,12 +92,19 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
     blockNodes_[it - blockIds_.begin()].push_back(n);
   }
 
+  if (append)
+    openToAppend(nodalNames);
+  else
+    create(coords, nodalNames);
+}
+
+void ExodusWriter::create(const std::vector<double>& coords, const std::vector<std::string>& nodalNames) {
   // Peridigm's gold files are netCDF-3 64-bit-offset with 8-byte reals; match that so that
   // tools reading either file see the same format.
   int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
-  exoid_ = ex_create(filename.c_str(), EX_CLOBBER | EX_LARGE_MODEL, &cpuWordSize, &ioWordSize);
+  exoid_ = ex_create(filename_.c_str(), EX_CLOBBER | EX_LARGE_MODEL, &cpuWordSize, &ioWordSize);
   if (exoid_ < 0)
-    throw std::runtime_error("ExodusWriter: cannot create Exodus file '" + filename + "'");
+    throw std::runtime_error("ExodusWriter: cannot create Exodus file '" + filename_ + "'");
 
   try {
     const auto nn = static_cast<int64_t>(numNodes_);
@@ -116,6 +123,29 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
     }
     if (!globalNames_.empty()) putVariableNames(EX_GLOBAL, globalNames_, "global");
     check(ex_update(exoid_), "ex_update");
+  } catch (...) {
+    ex_close(exoid_);
+    exoid_ = -1;
+    throw;
+  }
+}
+
+// The file was written by a writer made with the same arguments (the checkpoint's fingerprint says the deck
+// is the same); its variable counts are checked as a guard, then writeStep's indices hold.
+void ExodusWriter::openToAppend(const std::vector<std::string>& nodalNames) {
+  int cpuWordSize = sizeof(double), ioWordSize = 0;
+  float version = 0;
+  exoid_ = ex_open(filename_.c_str(), EX_WRITE, &cpuWordSize, &ioWordSize, &version);
+  if (exoid_ < 0) throw std::runtime_error("ExodusWriter: cannot open Exodus file '" + filename_ + "' to continue it");
+  try {
+    for (const auto& [type, names] : {std::make_pair(EX_NODAL, nodalNames), std::make_pair(EX_ELEM_BLOCK, elementNames_),
+                                      std::make_pair(EX_GLOBAL, globalNames_)}) {
+      int n = 0;
+      check(ex_get_variable_param(exoid_, type, &n), "ex_get_variable_param");
+      if (n != static_cast<int>(names.size()))
+        throw std::runtime_error("ExodusWriter(" + filename_ + "): the file to continue has other variables");
+    }
+    step_ = static_cast<int>(ex_inquire_int(exoid_, EX_INQ_TIME));
   } catch (...) {
     ex_close(exoid_);
     exoid_ = -1;

@@ -20,12 +20,14 @@ class ExodusWriter {
   // coords: 3 per node. blockIdPerNode: 1-based block id per node.
   // nodalVectorNames "Displacement" -> variables DisplacementX, DisplacementY, DisplacementZ.
   // Throws std::runtime_error (naming the file) on any ExodusII failure or bad sizes.
+  // append: continue a file this writer wrote with the same arguments (a restart): it is opened, not
+  // created, and the next writeStep follows its last step; a file with other variables is an error.
   ExodusWriter(const std::string& filename, const std::vector<double>& coords,
                const std::vector<int>& blockIdPerNode, bool planar,
                const std::vector<std::string>& nodalVectorNames,
                const std::vector<std::string>& nodalScalarNames,
                const std::vector<std::string>& elementScalarNames,
-               const std::vector<std::string>& globalNames = {});
+               const std::vector<std::string>& globalNames = {}, bool append = false);
   ~ExodusWriter();
 
   ExodusWriter(const ExodusWriter&) = delete;
@@ -48,6 +50,8 @@ class ExodusWriter {
   void putCoordinates(const std::vector<double>& coords) const;
   void putBlocks() const;
   void putVariableNames(int entityType, std::vector<std::string> names, const std::string& what) const;
+  void create(const std::vector<double>& coords, const std::vector<std::string>& nodalNames);
+  void openToAppend(const std::vector<std::string>& nodalNames);
 
   std::string filename_;
   int exoid_ = -1;

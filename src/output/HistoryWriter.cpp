@@ -5,7 +5,7 @@
 
 namespace pf {
 
-HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& columns)
+HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::string>& columns, bool append)
     : path_(path), columns_(columns) {
   if (columns_.empty()) throw std::runtime_error("HistoryWriter(" + path + "): no columns");
   std::set<std::string> seen;
@@ -15,8 +15,9 @@ HistoryWriter::HistoryWriter(const std::string& path, const std::vector<std::str
     if (!seen.insert(c).second)
       throw std::runtime_error("HistoryWriter(" + path + "): duplicate column name '" + c + "'");
   }
-  file_ = std::fopen(path.c_str(), "w");
+  file_ = std::fopen(path.c_str(), append ? "a" : "w");
   if (!file_) throw std::runtime_error("HistoryWriter: cannot open '" + path + "' for writing");
+  if (append) return;
   std::string header;
   for (std::size_t i = 0; i < columns_.size(); ++i) header += (i ? "," : "") + columns_[i];
   header += "\n";

@@ -13,7 +13,9 @@ class HistoryWriter {
   // Truncates/creates path and writes the header "col1,col2,...".
   // Throws std::runtime_error naming the file if it cannot be opened, or if a column name is
   // empty, duplicated, or contains a comma/quote/newline (the file is plain, unquoted CSV).
-  HistoryWriter(const std::string& path, const std::vector<std::string>& columns);
+  // append: continue a file that already holds this header and some rows (a restart); nothing is written
+  // on opening.
+  HistoryWriter(const std::string& path, const std::vector<std::string>& columns, bool append = false);
   ~HistoryWriter();
 
   HistoryWriter(const HistoryWriter&) = delete;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
+#include "CheckpointFile.hpp"
 #include "ExodusWriter.hpp"
 #include "core/OutputFields.hpp"
 #include "HistoryWriter.hpp"
@@ -159,7 +161,7 @@ void OutputManager::openFiles() {
   files_ = std::make_unique<OutputFiles>(baseName_, exodus_ ? std::vector<std::string>{".csv", ".e"}
                                                             : std::vector<std::string>{".csv"}, where_);
   try {
-    openWriters();
+    openWriters(false);
   } catch (const std::exception& e) {
     files_->abandon(std::string("failed before the first step: ") + e.what());
     throw;
@@ -167,7 +169,7 @@ void OutputManager::openFiles() {
 }
 
 // The history's columns, and the Exodus file's variables.
-void OutputManager::openWriters() {
+void OutputManager::openWriters(bool append) {
   std::vector<std::string> cols = {"time", "step"};
   if (applied_) cols.push_back("Applied_Displacement");
   auto label = [](std::string s) {
@@ -183,17 +185,17 @@ void OutputManager::openWriters() {
       else
         cols.push_back("Probe_" + label(p.name) + "_" + var);
     }
-  history_ = std::make_unique<HistoryWriter>(files_->part(".csv"), cols);
+  history_ = std::make_unique<HistoryWriter>(files_->part(".csv"), cols, append);
   if (!exodus_) return;
   std::vector<std::string> scalars, elements;
   for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
   if (nodalVectors_.empty() && elements.empty() && !globals_.empty())
     // Peridigm's file for global data only: one dummy node at the origin in one one-element block.
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
-                                             false, nodalVectors_, scalars, elements, globals_);
+                                             false, nodalVectors_, scalars, elements, globals_, append);
   else
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), pb_.cloud.x, pb_.cloud.block, pb_.cloud.planar,
-                                             nodalVectors_, scalars, elements, globals_);
+                                             nodalVectors_, scalars, elements, globals_, append);
 }
 
 OutputManager::~OutputManager() = default;
@@ -286,6 +288,38 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
     scalars[exodusName(var)] = model_.layout().gatherToRoot(owned.data(), 1);
   }
   onRoot([&] { writer_->writeStep(time, vectors, none, scalars, globals); });
+}
+
+void OutputManager::saveTo(CheckpointData& data) const {
+  const std::string key = "output/" + baseName_ + "/";
+  data.numbers[key + "count"] = {static_cast<double>(count_), lastTime_};
+  if (!files_) return;  // not rank 0
+  data.fileCopies[key + "csv"] = files_->part(".csv");
+  if (exodus_) data.fileCopies[key + "exodus"] = files_->part(".e");
+}
+
+void OutputManager::resumeFrom(const CheckpointData& data) {
+  const std::string key = "output/" + baseName_ + "/";
+  const std::vector<double>& count = data.number(key + "count");
+  count_ = static_cast<long>(count.at(0));
+  lastStep_ = count_ - 1;
+  lastTime_ = count.at(1);
+  onRoot([&] {
+    writer_.reset();
+    history_.reset();
+    for (const auto& [suffix, section] : {std::make_pair(".csv", "csv"), std::make_pair(".e", "exodus")}) {
+      if (suffix == std::string(".e") && !exodus_) continue;
+      std::ofstream out(files_->part(suffix), std::ios::binary | std::ios::trunc);
+      const std::string& bytes = data.text(key + section);
+      if (!out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) || !out.flush())
+        throw std::runtime_error("cannot write '" + files_->part(suffix) + "'");
+    }
+    openWriters(true);
+    std::string header;
+    for (const std::string& c : history_->columns()) header += (header.empty() ? "" : ",") + c;
+    if (data.text(key + "csv").compare(0, header.size() + 1, header + "\n") != 0)
+      throw std::runtime_error("the checkpoint's history has other columns than this deck's");
+  });
 }
 
 void OutputManager::finish() {

@@ -26,6 +26,7 @@
 namespace pf {
 
 class ExodusWriter;
+struct CheckpointData;
 class HistoryWriter;
 class OutputFiles;
 
@@ -41,6 +42,12 @@ class OutputManager : public StepObserver {
   // The run failed or was stopped (verb: "failed", "interrupted"): <name>.status says so, the parts stay.
   // Not collective (every rank may call it; rank 0 writes).
   void abandon(const std::string& verb, const std::string& line) noexcept;
+  // A checkpoint: this list's step count and (rank 0) copies of its files as they stand, which are complete
+  // up to the last reported step (rows are flushed and Exodus steps synced as they are written).
+  void saveTo(CheckpointData& data) const;
+  // A restart, before the first step is reported (collective): the part files become the checkpoint's
+  // copies and continue from its step count, so the finished files equal an uninterrupted run's.
+  void resumeFrom(const CheckpointData& data);
   std::string exodusFile() const { return exodusName_; }
   std::string historyFile() const { return historyName_; }
 
@@ -62,7 +69,7 @@ class OutputManager : public StepObserver {
   void addReactions(const OutputSpec& out);
   void onRoot(const std::function<void()>& write);
   void openFiles();
-  void openWriters();
+  void openWriters(bool append);
   std::vector<double> historyRow(const StepReport& report, const std::vector<double>& u,
                                  const std::vector<double>& v, const std::vector<double>& f);
   void writeExodusStep(double time, const std::vector<double>& u, const std::vector<double>& v,

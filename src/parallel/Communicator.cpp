@@ -44,6 +44,20 @@ int Communicator::firstFailing(bool mine) const {
   return lowest < size() ? lowest : -1;
 }
 
+std::vector<double> Communicator::gatherToRoot(const std::vector<double>& mine) const {
+  const int n = static_cast<int>(mine.size());
+  std::vector<int> counts(rank() == 0 ? size() : 0), displs(counts.size(), 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, impl_->mpi);
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    displs[r] = static_cast<int>(total);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  std::vector<double> out(total);
+  MPI_Gatherv(mine.data(), n, MPI_DOUBLE, out.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, impl_->mpi);
+  return out;
+}
+
 std::string Communicator::broadcast(const std::string& text, int root) const {
   int n = static_cast<int>(text.size());
   MPI_Bcast(&n, 1, MPI_INT, root, impl_->mpi);

@@ -4,6 +4,7 @@
 // MPI run itself (init/finalize) is an MpiSession, owned by the executable's main.
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace pf {
 
@@ -24,6 +25,8 @@ class Communicator {
   // agree on a failure that happened on some of them only (a rank-0 file write, say).
   int firstFailing(bool mine) const;
   bool anyFailed(bool mine) const { return firstFailing(mine) >= 0; }
+  // Collective: rank 0 gets every rank's values concatenated in rank order; the others get an empty vector.
+  std::vector<double> gatherToRoot(const std::vector<double>& mine) const;
   // Collective: every rank returns root's text (the others' argument is ignored).
   std::string broadcast(const std::string& text, int root) const;
 

@@ -109,7 +109,8 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
 
 void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                     StepObserver& observer) {
-  long step = 0;
+  const SolverResume* resume = takeResume();
+  long step = resume ? resume->step : 0;  // for messages
   runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double, double t) {
                  const std::vector<double> uStepStart(u);
@@ -119,7 +120,8 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
                  model.commit();
                  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uStepStart[k];
                  return StepStats{r.iterations, -1, r.residual, r.tolerance};
-               });
+               },
+               resume);
 }
 
 }  // namespace pf

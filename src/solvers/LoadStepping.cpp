@@ -48,19 +48,25 @@ void predictStep(const Model& model, double t, std::vector<double>& u, const std
 
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
-                  const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double)>& solveStep) {
+                  const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double)>& solveStep,
+                  const SolverResume* resume) {
   using Clock = std::chrono::steady_clock;
   const int n = model.numDofs();
   const bool root = model.layout().rank() == 0;
   std::vector<double> f(n), duPrev(n, 0.0);
+  const SolverCarry carry{{{"Increment", &duPrev}}, {}};  // the next step's predictor
   const double t0 = times.front();
   const int steps = static_cast<int>(times.size()) - 1;
-  model.applyPrescribed(t0, u.data());
-  model.internalForce(u.data(), f.data());
-  std::fill(v.begin(), v.end(), 0.0);
-  requireFiniteState(model, CheckPoint{"quasi-static", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(f));
-  observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
-  for (int step = 1; step <= steps; ++step) {
+  if (resume) {
+    duPrev = resume->vector("Increment");
+  } else {
+    model.applyPrescribed(t0, u.data());
+    model.internalForce(u.data(), f.data());
+    std::fill(v.begin(), v.end(), 0.0);
+    requireFiniteState(model, CheckPoint{"quasi-static", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(f));
+    observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0, &carry}, u, v, f);
+  }
+  for (int step = resume ? static_cast<int>(resume->step) + 1 : 1; step <= steps; ++step) {
     const auto start = Clock::now();
     const double tA = times[step - 1], tB = times[step], dt = tB - tA;
     // A condition that is not finite at the step's end fails now, naming its expression, rather than
@@ -84,7 +90,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
                     tB, s.iterations, s.residual, s.tolerance, wall);
       std::fflush(stdout);
     }
-    observer.onStep(StepReport{step, tB, s.iterations, s.residual, s.tolerance, wall}, u, v, f);
+    observer.onStep(StepReport{step, tB, s.iterations, s.residual, s.tolerance, wall, &carry}, u, v, f);
   }
 }
 

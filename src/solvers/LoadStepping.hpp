@@ -8,6 +8,7 @@ namespace pf {
 
 class Model;
 class StepObserver;
+struct SolverResume;
 
 struct ResidualNorms {
   double residual = 0;         // || (f + b) V || over free dofs (force)
@@ -33,9 +34,12 @@ struct StepStats {
 // for each step k = 1 .. times.size()-1 calls solveStep(u, duPrev, times[k-1], times[k]), which must leave u
 // converged at times[k], the state committed and duPrev = the step's increment; prints one progress line,
 // reports the step with the load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
+// resume (or null): continue after resume->step, whose increment it carries as "Increment" (a restart);
+// each report carries duPrev under that name.
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>& u, std::vector<double>& duPrev, double tA,
-                                                double tB)>& solveStep);
+                                                double tB)>& solveStep,
+                  const SolverResume* resume);
 
 }  // namespace pf

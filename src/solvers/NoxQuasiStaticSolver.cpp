@@ -363,13 +363,15 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
 
 void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                                const std::vector<double>& times, StepObserver& observer) {
-  step_ = 0;
+  const SolverResume* resume = takeResume();
+  step_ = resume ? resume->step : 0;
   runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB) {
                  ++step_;
                  const Outcome o = advance(model, u, duPrev, tA, tB, 0);
                  return StepStats{o.iterations, o.linearIterations, o.residual, o.tolerance};
-               });
+               },
+               resume);
 }
 
 }  // namespace pf

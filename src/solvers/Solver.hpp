@@ -3,8 +3,10 @@
 // advance (u, v) from t0 to t1 and report each completed step to an observer, which decides what to
 // write. A step is reported only after it has converged and its state is finite; otherwise the solver
 // throws SolverFailure (on every rank), so nothing non-converged or non-finite is presented as a result.
+#include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pf {
@@ -16,6 +18,25 @@ class SolverFailure : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A solver's own state after a reported step, beyond u, v and the model's committed state: what it needs
+// to continue from there bit for bit. Named vectors (3 per owned node) and scalars; an observer may store
+// them (a checkpoint) and hand them back through Solver::resumeAfter, but never interprets them.
+struct SolverCarry {
+  std::vector<std::pair<std::string, const std::vector<double>*>> vectors;
+  std::vector<std::pair<std::string, double>> scalars;
+};
+
+// Where a solver continues: after its reported step `step` at `time`, with the carry it reported there.
+struct SolverResume {
+  long step = 0;
+  double time = 0.0;
+  std::map<std::string, std::vector<double>> vectors;
+  std::map<std::string, double> scalars;
+  // The named entry; std::logic_error if absent (the checkpoint layer stores every one a report carried).
+  const std::vector<double>& vector(const std::string& name) const;
+  double scalar(const std::string& name) const;
+};
+
 struct StepReport {
   int step = 0;          // 0 = initial state
   double time = 0.0;
@@ -23,6 +44,7 @@ struct StepReport {
   double residual = 0.0; // final residual norm of the step (force units), 0 for explicit steps
   double tolerance = 0.0;
   double wallSeconds = 0.0;  // wall time of this step
+  const SolverCarry* carry = nullptr;  // what resuming after this step needs (see SolverCarry)
 };
 
 class StepObserver {
@@ -46,6 +68,24 @@ class Solver {
   // Verlet runs from times.front() to times.back() with its own time step). At least two, increasing.
   virtual void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                    StepObserver& observer) = 0;
+  // The next run() continues after resume.step instead of starting at times.front(): u, v and the model's
+  // committed state are those of that step (a restart), nothing up to it is reported again.
+  void resumeAfter(SolverResume resume) {
+    resume_ = std::move(resume);
+    resuming_ = true;
+  }
+
+ protected:
+  // run() calls this once: the resume point, or null for a run from the start.
+  const SolverResume* takeResume() {
+    if (!resuming_) return nullptr;
+    resuming_ = false;
+    return &resume_;
+  }
+
+ private:
+  SolverResume resume_;
+  bool resuming_ = false;
 };
 
 }  // namespace pf

@@ -57,6 +57,13 @@ struct ForceTimer {
   }
 };
 
+// The acceleration the next half step uses: zero on prescribed components, (f + b) / rho elsewhere.
+void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& b,
+                         std::vector<double>& a) {
+  const std::vector<char>& fixed = model.prescribedMask();
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
+}
+
 }  // namespace
 
 double VerletSolver::stableTimeStep(const Model& model) {
@@ -84,32 +91,46 @@ void VerletSolver::check(const Model& model) const {
 
 void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                        const std::vector<double>& times, StepObserver& observer) {
+  const SolverResume* resume = takeResume();
   const double t0 = times.front(), t1 = times.back();
   using Clock = std::chrono::steady_clock;
   const int n = model.numDofs();
   double dt = timeStep(model);
-  const long steps = std::max(1L, static_cast<long>(std::ceil((t1 - t0) / dt - 1e-9)));
+  long steps = std::max(1L, static_cast<long>(std::ceil((t1 - t0) / dt - 1e-9)));
   if (opt_.fixedDt <= 0) dt = (t1 - t0) / steps;  // land exactly on t1
+  if (resume) {  // the interrupted run's step (its stable-step estimate may differ in the last bit at another np)
+    dt = resume->scalar("dt");
+    steps = static_cast<long>(resume->scalar("steps"));
+  }
   const bool root = model.layout().rank() == 0;
   if (root) std::printf("Verlet: dt = %.6g s, %ld steps\n", dt, steps);
 
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double>& rho = model.density();
   std::vector<double> f(n), b(n), a(n), uPrev(n);
-  model.applyPrescribed(t0, u.data());
-  model.internalForce(u.data(), f.data());
-  model.commit();
-  model.bodyForce(t0, b.data());
-  for (int k = 0; k < n; ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / rho[k / 3];
-  requireFiniteState(model, CheckPoint{"Verlet", 0, t0}, u, v, f,
-                     finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
-  observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0}, u, v, f);
+  // f is all a later step needs of this one besides u, v and the committed state (a = (f + b) / rho).
+  const SolverCarry carry{{{"Force_Density", &f}}, {{"dt", dt}, {"steps", static_cast<double>(steps)}}};
+  if (resume) {
+    f = resume->vector("Force_Density");
+    model.bodyForce(resume->time, b.data());
+  } else {
+    model.applyPrescribed(t0, u.data());
+    model.internalForce(u.data(), f.data());
+    model.commit();
+    model.bodyForce(t0, b.data());
+  }
+  acceleration(model, f, b, a);
+  if (!resume) {
+    requireFiniteState(model, CheckPoint{"Verlet", 0, t0}, u, v, f,
+                       finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
+    observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0, &carry}, u, v, f);
+  }
 
   const long every = std::max(1L, steps / 20);
   ForceTimer forceTime;
   const double runCpu0 = threadCpuSeconds();
   auto runStart = Clock::now();
-  for (long s = 1; s <= steps; ++s) {
+  for (long s = resume ? resume->step + 1 : 1; s <= steps; ++s) {
     auto start = Clock::now();
     const double t = (s == steps && opt_.fixedDt <= 0) ? t1 : t0 + s * dt;
     uPrev = u;
@@ -131,7 +152,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     }
     requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-    observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall}, u, v, f);
+    observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall, &carry}, u, v, f);
     if (root && (s % every == 0 || s == steps))
       std::printf("step %ld/%ld  t = %.6g  wall %.2f s\n", s, steps, t,
                   std::chrono::duration<double>(Clock::now() - runStart).count()), std::fflush(stdout);

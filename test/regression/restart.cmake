@@ -1,0 +1,40 @@
+# Issue 15, part 7: restart from a checkpoint. A run killed with SIGKILL between two checkpoints and restarted
+# with `--restart` ends with the same rs.csv and rs.e as an uninterrupted run: byte for byte at the same rank
+# count (Verlet and NOXQuasiStatic), within the stated np 1 vs np 2 round-off when written at np 2 and
+# restarted at np 1 (the rows up to the checkpoint still byte for byte). A truncated, corrupt, foreign or
+# missing checkpoint gives one line and a non-zero exit at np 1 and 2 (run_restart.py). Each case runs in
+# its own temporary directory under a timeout: a hang fails the test instead of stalling the suite.
+set(RST ${CMAKE_CURRENT_SOURCE_DIR}/regression/restart)
+# CSV bounds for np 2 -> 1, about 5x the uninterrupted np 1 vs np 2 differences measured on the same decks
+# (max over all rows). Bar (Verlet): reactions 2.1e-8 N (of 4.7e3 N; the Y ones are zero but for round-off),
+# displacement 6.2e-17 m (of 7e-5), dilatation 3.2e-15 (of 4e-4). Plate (NOX, relative tolerance 1e-7, so
+# iterates differ within it): reactions 3.1e-5 N (of 4e4 N), stress 3.8 Pa (of 7e8), plastic strain 1.9e-10
+# (of 5e-3), displacement of the driven layer 1.6e-12 m. Time, step and the applied displacement: exact.
+set(restart_bar_tols --default abs:1e-7 --tol time=abs:0 --tol step=abs:0
+    --tol Probe_Q1_DisplacementX=abs:3e-16 --tol Probe_Q1_DisplacementY=abs:3e-16 --tol Probe_Q1_DisplacementZ=abs:0
+    --tol Probe_Q3_DisplacementX=abs:3e-16 --tol Probe_Q3_DisplacementY=abs:3e-16 --tol Probe_Q3_DisplacementZ=abs:0
+    --tol Probe_Q1_Dilatation=abs:2e-14)
+set(restart_plate_tols --default abs:2e-4 --tol time=abs:0 --tol step=abs:0 --tol Applied_Displacement=abs:0
+    --tol Probe_A_Signed_Von_Mises_Stress=abs:20 --tol Probe_B_Signed_Von_Mises_Stress=abs:20
+    --tol Probe_A_Equivalent_Plastic_Strain=abs:1e-9 --tol Probe_B_Equivalent_Plastic_Strain=abs:1e-9
+    --tol Probe_Applied_DisplacementX=abs:1e-11 --tol Probe_Applied_DisplacementY=abs:1e-11
+    --tol Probe_Applied_DisplacementZ=abs:0)
+foreach(deck bar plate)
+  if(deck STREQUAL "bar")
+    set(file ${RST}/restart_bar.xml)
+  else()
+    set(file ${RST}/restart_plate_nox.xml)
+  endif()
+  add_test(NAME restart_${deck}_kill_np1_np1
+           COMMAND ${PY} ${RST}/run_restart.py kill ${file} 1 1 ${PERIFORGE_EXE} ${MPIRUN})
+  add_test(NAME restart_${deck}_kill_np2_np1
+           COMMAND ${PY} ${RST}/run_restart.py kill ${file} 2 1 ${PERIFORGE_EXE} ${MPIRUN}
+                   -- ${restart_${deck}_tols} -- ${RST}/${deck}_np.comp)
+  set_tests_properties(restart_${deck}_kill_np1_np1 PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS 1)
+  set_tests_properties(restart_${deck}_kill_np2_np1 PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS 2)
+endforeach()
+foreach(np 1 2)
+  add_test(NAME restart_refused_np${np}
+           COMMAND ${PY} ${RST}/run_restart.py refuse ${RST}/restart_bar.xml ${np} ${PERIFORGE_EXE} ${MPIRUN})
+  set_tests_properties(restart_refused_np${np} PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS ${np})
+endforeach()
