@@ -236,14 +236,16 @@ PF_INLINE double updatePlasticExtension(const double* __restrict w, const double
 }
 
 // Force from the updated state, written as osbElasticForce writes it (t = t^iso + t^d, Eqs. 7-13
-// with e^d - e^dp), along the deformed bond; dev = B/m (times Peridigm's shear correction factor, if on).
+// with e^d - e^dp), along the deformed bond. B: c.B, times Peridigm's shear correction factor if on -- it
+// scales the whole deviatoric state, its -c theta x part included (elastic_plastic_hardening.cxx).
 template <bool Unit>
 PF_INLINE void addJ2BondForces(const FamilyView& fam, const OsbConstants& c, int i, const osb::FamilyScratch& scr,
                                bool inBlock, const double* __restrict w, const double* __restrict xr,
-                               const double* __restrict ep, double theta, double invm, double dev,
+                               const double* __restrict ep, double theta, double invm, double B,
                                osb::Quad* force) {
   const double* __restrict len = scr.len;
-  const double iso = (c.A - c.B * c.c) * theta * invm;
+  const double iso = (c.A - B * c.c) * theta * invm;
+  const double dev = B * invm;
   auto forceOverLength = [&](int k, auto ch) {  // s = t / |y_j - y_i|; e^dp = 0 gives the elastic s
     const osb::Lanes x = ch.load(xr + k), l = ch.load(len + k, 1.0);
     return osb::weighted<Unit>(ch, w, k, iso * x + dev * ((l - x) - ch.load(ep + k))) / l;
@@ -282,11 +284,10 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
   const double invm = 1.0 / m;
   OsbJ2Constants k = flow.ret;
   k.yield = osbYieldConstants(p.dim, yieldVolume(fam, p, m));
-  k.bm = c.B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
-  if (s.scf) {        // Peridigm's correction: deviatoric modulus times s, yield value times s^2
-    k.bm *= s.scf[i];
-    k.yield.Cy *= s.scf[i] * s.scf[i];
-  }
+  // Peridigm's correction: deviatoric modulus times s, yield value times s^2 (exact no-ops when off).
+  const double B = s.scf ? c.B * s.scf[i] : c.B;
+  k.bm = B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
+  if (s.scf) k.yield.Cy *= s.scf[i] * s.scf[i];
 
   // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
   // osbDilatation so that the elastic response is bit-identical to "Elastic".
@@ -311,7 +312,7 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
     for (int b = 0; b < n; ++b) ep[b] = epN[b];  // every trial value is written: StateStore::commit swaps
   }
   storeNodeState(s, i, r, theta);
-  addJ2BondForces<Unit>(fam, c, i, scr, inBlock, w, xr, ep, theta, invm, k.bm, force);
+  addJ2BondForces<Unit>(fam, c, i, scr, inBlock, w, xr, ep, theta, invm, B, force);
 }
 
 // The kernel for one influence kind; Unit: omega = 1 everywhere, the array is not read.
