@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "J2PathRunner.hpp"
+#include "LatticeFixture.hpp"
 #include "materials/PeridigmHardening.hpp"
 
 using namespace pftest;
@@ -230,4 +231,44 @@ TEST(PeridigmHardening, ShearCorrectionFactorOnALattice) {
   // The deviatoric term is scaled by s exactly; the isotropic one (theta = O(g^2) on the symmetric lattice)
   // is not, which leaves a relative O(g) difference (measured 7e-11).
   EXPECT_NEAR(a.stress()[1] / b.stress()[1], s, 1e-9 * s);
+}
+
+// The stiffness bound scaled by max(1, s_i) (ElasticPlasticMaterial::stiffnessBound) bounds the force
+// Jacobian's row sums, by central differences column by column, on a 7^3 cube: every node lies within a
+// horizon of a face, where s varies most (neighbours' s_j differ from s_i) and the factor also changes
+// the dilatation coupling (A - s B c).
+TEST(PeridigmHardening, StiffnessBoundWithShearCorrection) {
+  for (bool scf : {false, true}) {
+    const Lattice L = makeLattice(7, false, kDx, 3.015, kDx, pf::Influence::One, false);
+    auto v = peridigmValues(0.0, scf);
+    v["Yield Stress"] = 1e15;  // elastic
+    auto mat = pf::makeMaterial("Elastic Plastic Hardening", v);
+    std::vector<double> bound(L.numNodes, 0.0);
+    mat->stiffnessBound(L.view(), bound.data());
+    auto force = [&](const std::vector<double>& y) {
+      pf::StateStore st;
+      st.allocate(mat->stateSpecs(), L.numQueries, L.fam.numBonds());
+      std::vector<double> f(3 * L.numNodes, 0.0);
+      mat->computeForce(L.view(), y.data(), st, f.data());
+      return f;
+    };
+    std::vector<double> y(L.x);
+    for (std::size_t k = 0; k < y.size(); ++k) y[k] += 1e-4 * kDx * std::sin(1.7 * k + 0.3);  // small, generic
+    const double h = 1e-7 * kDx;  // FD error ~ eps |xi| / h ~ 2e-9 relative (see test_elastic_osb.cpp)
+    std::vector<double> row(3 * L.numNodes, 0.0);
+    for (std::size_t c = 0; c < y.size(); ++c) {
+      const double y0 = y[c];
+      y[c] = y0 + h;
+      const std::vector<double> fp = force(y);
+      y[c] = y0 - h;
+      const std::vector<double> fm = force(y);
+      y[c] = y0;
+      for (std::size_t k = 0; k < row.size(); ++k) row[k] += std::fabs((fp[k] - fm[k]) / (2 * h));
+    }
+    double worst = 0.0;
+    for (int i = 0; i < L.numNodes; ++i)
+      for (int a = 0; a < 3; ++a) worst = std::max(worst, row[3 * i + a] / bound[i]);
+    std::printf("7^3 cube, factor %s: max row sum / bound = %.4f\n", scf ? "on" : "off", worst);
+    EXPECT_LE(worst, 1.0);  // a bound: no allowance (the FD error is ~1e-8)
+  }
 }
