@@ -33,7 +33,9 @@ const char* kUsage =
     "  --E, --nu, --sy, --K, --H set Young's Modulus, Poisson's Ratio, Yield Stress, Isotropic and Kinematic\n"
     "  Hardening Modulus. For the OSB models (Elastic, Elastic Plastic, Elastic Plastic Hardening) those the\n"
     "  model takes default to 200e9, 0.3, 600e6, 20e9, 0 unless a --param names them; other models get only\n"
-    "  what is given (e.g. Microelastic: --param \"Bulk Modulus=1e11\" or --E).\n"
+    "  what is given (e.g. Microelastic: --param \"Bulk Modulus=1e11\" or --E). Every other parameter keeps the\n"
+    "  model's default, Peridigm's (Yield Normalization = Continuum; Elastic Plastic Hardening in 3D: Apply Shear\n"
+    "  Correction Factor = true): --param \"Yield Normalization=Discrete\" for the lattice-consistent constants.\n"
     "  --dim PlaneStress|PlaneStrain sets Plane Stress|Strain and Thickness = 1 mm.\n"
     "  --partial-volume 1 weights each bond by the share of its cell inside the horizon.\n"
     "  CSV: step,strain, then every output field the model declares (its registry outputs) that it writes\n"
@@ -90,11 +92,14 @@ void materialValues(const Options& o, const pf::MaterialEntry& e, double dx, std
   const bool osb = e.model == "Elastic" || e.model == "Elastic Plastic" || e.model == "Elastic Plastic Hardening";
   const std::map<std::string, std::string> legacy = {{"--E", "200e9"}, {"--nu", "0.3"}, {"--sy", "600e6"},
                                                      {"--K", "20e9"}, {"--H", "0"}};
+  const bool peridigmLaw = v.count("Hardening Modulus") != 0;
   for (const auto& sc : shortcutNames()) {
     const std::string& name = sc.second;
     auto given = o.shortcuts.find(sc.first);
     if (given != o.shortcuts.end()) v[name] = number(sc.first, given->second);  // unknown to the model: refused
-    else if (osb && takes(name) && !v.count(name)) v[name] = number(sc.first, legacy.at(sc.first));
+    // Peridigm's "Hardening Modulus" is the other hardening law: no legacy K, H beside it.
+    else if (osb && takes(name) && !v.count(name) && !(peridigmLaw && name.find("Hardening") != std::string::npos))
+      v[name] = number(sc.first, legacy.at(sc.first));
   }
   if (takes("Density") && !v.count("Density")) v["Density"] = 8000.0;
   const std::string dim = o.opt.at("--dim");

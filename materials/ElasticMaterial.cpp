@@ -7,7 +7,9 @@ namespace pf {
 
 ElasticMaterial::ElasticMaterial(const MaterialInput& in)
     : moduli_(elasticModuliFrom(in)), dim_(dimensionFrom(in, &thickness_)), density_(in.get("Density")),
-      osb_(osbConstants(dim_, moduli_)) {}
+      osb_(osbConstants(dim_, moduli_)) {
+  ignoredShearCorrection(in, "Elastic");
+}
 
 MaterialEntry ElasticMaterial::entry() {
   return {"Elastic", "linear ordinary state-based solid", elasticSolidParameters(),

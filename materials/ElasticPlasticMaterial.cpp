@@ -1,40 +1,67 @@
 #include "ElasticPlasticMaterial.hpp"
 
+#include <algorithm>
+
 #include "core/InputError.hpp"
 #include "OsbKernels.hpp"
+#include "ShearCorrectionFactor.hpp"
 #include "SolidParameters.hpp"
 
 namespace pf {
+
+namespace {
+
+// Peridigm's H or the paper's K and H: two laws, one per deck (InputError naming both if both are given).
+void readHardening(const MaterialInput& in, J2Parameters& p) {
+  const std::string where = in.inputFile + ": material '" + in.name + "'";
+  std::string paper;
+  for (const char* n : {"Isotropic Hardening Modulus", "Kinematic Hardening Modulus"})
+    if (in.has(n)) paper += (paper.empty() ? "'" : " and '") + std::string(n) + "'";
+  if (in.has("Hardening Modulus")) {
+    if (!paper.empty())
+      throw InputError(where + ": 'Hardening Modulus' (Peridigm's H, yield when |t^d|^2/2 - psi0 - H lambda > 0) "
+                       "and " + paper + " (Pirzadeh et al.'s moduli in Pa) are two different hardening laws: "
+                       "give one of them");
+    if (p.dim != Dimension::ThreeD)
+      throw InputError(where + ": Peridigm's 'Hardening Modulus' law is 3D only (Peridigm's "
+                       "elastic_plastic_hardening.cxx has no planar yield value); in 2D use "
+                       "'Isotropic Hardening Modulus' / 'Kinematic Hardening Modulus'");
+    p.peridigmLaw = true;
+    p.peridigmHardening = in.get("Hardening Modulus");
+    return;
+  }
+  p.isoHardening = in.get("Isotropic Hardening Modulus");
+  p.kinHardening = in.get("Kinematic Hardening Modulus");
+}
+
+}  // namespace
 
 ElasticPlasticMaterial::ElasticPlasticMaterial(const MaterialInput& in, bool hardening)
     : moduli_(elasticModuliFrom(in)), density_(in.get("Density")) {
   params_.dim = dimensionFrom(in, &params_.thickness);
   params_.osb = osbConstants(params_.dim, moduli_);
   params_.yieldStress = in.get("Yield Stress");  // > 0: its spec's range, as every range below
-  if (hardening) {
-    if (in.has("Hardening Modulus") && in.has("Isotropic Hardening Modulus"))
-      throw InputError(in.inputFile + ": material '" + in.name + "': give 'Isotropic Hardening Modulus' or "
-                       "'Hardening Modulus' (Peridigm's name for it), not both");
-    params_.isoHardening = in.get(in.has("Hardening Modulus") ? "Hardening Modulus" : "Isotropic Hardening Modulus");
-    params_.kinHardening = in.get("Kinematic Hardening Modulus");
-  }
+  if (hardening) readHardening(in, params_);
   params_.norm = in.text("Yield Normalization") == "Continuum" ? YieldNormalization::Continuum
                                                                 : YieldNormalization::Discrete;
+  shearCorrection_ = hardening ? shearCorrectionOf(in, params_.dim) : ignoredShearCorrection(in, "Elastic Plastic");
 }
 
-std::vector<ParameterSpec> ElasticPlasticMaterial::parameters() {
-  std::vector<ParameterSpec> params = elasticSolidParameters();
+std::vector<ParameterSpec> ElasticPlasticMaterial::parameters(bool hardening) {
+  std::vector<ParameterSpec> params = elasticSolidParameters(hardening ? ShearCorrection::Peridigm3D
+                                                                       : ShearCorrection::IgnoredAsPeridigm);
   params.push_back(ParameterSpec::real("Yield Stress", "initial uniaxial yield stress sigma_y0 [Pa]").need().positive());
   params.push_back(ParameterSpec::text("Yield Normalization",
-                                       "'Discrete': yield constants from the node's weighted volume m; 'Continuum': "
-                                       "the paper's 4 pi delta^5/5, pi h delta^4/2")
+                                       "'Continuum': the paper's and Peridigm's 4 pi delta^5/5, pi h delta^4/2; "
+                                       "'Discrete': yield constants from the node's weighted volume m "
+                                       "(lattice-consistent; docs/materials.md)")
                        .oneOf({"Discrete", "Continuum"})
-                       .byDefault("Discrete"));
+                       .byDefault("Continuum"));
   return params;
 }
 
 MaterialEntry ElasticPlasticMaterial::entry() {
-  return {"Elastic Plastic", "OSB J2 elastic-perfectly plastic solid (Mitchell 2011)", parameters(),
+  return {"Elastic Plastic", "OSB J2 elastic-perfectly plastic solid (Mitchell 2011)", parameters(false),
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, false)); },
           outputs()};
 }
@@ -57,7 +84,9 @@ std::vector<StateSpec> ElasticPlasticMaterial::states() {
           {"Von_Mises_Stress", Location::Node, false, true},
           {"Signed_Von_Mises_Stress", Location::Node, false, true},
           {"Dilatation", Location::Node, false, true},
-          {"Return_Mapping_Iterations", Location::Node, false, false}};
+          {"Return_Mapping_Iterations", Location::Node, false, false},
+          // Not history: set on the first evaluation from the reference family and kept (Peridigm's name).
+          {"Surface_Correction_Factor", Location::Node, false, true}};
 }
 
 void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
@@ -77,16 +106,31 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
   f.signedVonMises = state.trial("Signed_Von_Mises_Stress");
   f.theta = state.trial("Dilatation");
   f.iterations = state.trial("Return_Mapping_Iterations");
+  double* scf = state.trial("Surface_Correction_Factor");
+  if (fam.begin < fam.end && !(scf[fam.begin] > 0.0)) {  // first evaluation of this block: 0 = not yet set
+    if (shearCorrection_) osbShearCorrectionFactor(fam, scf);
+    else std::fill(scf + fam.begin, scf + fam.end, 1.0);
+  }
+  f.scf = shearCorrection_ ? scf : nullptr;
   osbJ2Force(fam, params_, y, f, force);
 }
 
 void ElasticPlasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {
   // The elastic bound also bounds the plastic tangent (the return only softens the deviatoric part).
   osbStiffnessBound(fam, params_.osb, bound);
+  if (!shearCorrection_) return;
+  // The factor stiffens the deviatoric terms by s (s_i for node i's bonds, s_j for the force t_ji a
+  // neighbour sends back). A ghost's s_j is not known here, so the bound is scaled by max(1, s_i): exact for
+  // uniform s (the interior); near faces, where s runs from 0.51 to 1.37 (40^3 cube), the elastic bound's
+  // slack covers it -- on a 7^3 cube, all of it within a horizon of a face, the finite-difference row sums
+  // reach 0.49 of the bound with the factor and without (test PeridigmHardening.StiffnessBoundWithShearCorrection).
+  std::vector<double> scf(static_cast<std::size_t>(fam.end), 1.0);
+  osbShearCorrectionFactor(fam, scf.data());
+  for (int i = fam.begin; i < fam.end; ++i) bound[i] *= std::max(1.0, scf[i]);
 }
 
-}  // namespace pf
+void ElasticPlasticMaterial::pairStiffness(const FamilyView& fam, double* c) const {
+  osbPairStiffness(fam, params_.osb, c);  // elastic moduli: a preconditioner (core/Material.hpp)
+}
 
-namespace pf {
-void ElasticPlasticMaterial::pairStiffness(const FamilyView& fam, double* c) const { osbPairStiffness(fam, params_.osb, c); }
 }  // namespace pf

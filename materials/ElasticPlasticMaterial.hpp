@@ -10,11 +10,13 @@ namespace pf {
 
 class ElasticPlasticMaterial : public Material {
  public:
-  // hardening: read "Isotropic/Kinematic Hardening Modulus" (or Peridigm's "Hardening Modulus" as K).
+  // hardening: Peridigm's "Hardening Modulus" H (its law, 3D) or the paper's "Isotropic/Kinematic Hardening
+  // Modulus" K, H (InputError if both kinds are given), and Peridigm's shear correction factor.
   ElasticPlasticMaterial(const MaterialInput& in, bool hardening);
   static MaterialEntry entry();
-  // Parameters of "Elastic Plastic" (elasticSolidParameters() + Yield Stress + Yield Normalization).
-  static std::vector<ParameterSpec> parameters();
+  // elasticSolidParameters() + Yield Stress + Yield Normalization; hardening: the shear correction as in
+  // Peridigm's Elastic Plastic Hardening (the hardening moduli are added by HardeningPlasticity).
+  static std::vector<ParameterSpec> parameters(bool hardening);
   static std::vector<StateSpec> states();          // what stateSpecs() returns (the same for every input)
   static std::vector<std::string> outputs();       // the output fields among them
 
@@ -27,11 +29,13 @@ class ElasticPlasticMaterial : public Material {
 
   const J2Parameters& j2() const { return params_; }
   const ElasticModuli& moduli() const { return moduli_; }
+  bool shearCorrection() const { return shearCorrection_; }
 
  private:
   ElasticModuli moduli_;
   double density_;
   J2Parameters params_;
+  bool shearCorrection_ = false;
 };
 
 }  // namespace pf

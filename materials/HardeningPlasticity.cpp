@@ -4,13 +4,19 @@ namespace pf {
 
 MaterialEntry HardeningPlasticity::entry() {
   using P = ParameterSpec;
-  std::vector<ParameterSpec> params = ElasticPlasticMaterial::parameters();
-  params.push_back(P::real("Isotropic Hardening Modulus", "K [Pa], linear in alpha").nonNegative().byDefault("0"));
-  params.push_back(P::real("Kinematic Hardening Modulus", "H [Pa], scalar back stress").nonNegative().byDefault("0"));
-  // No default: whether it was given decides which of the two names K is read from.
-  params.push_back(P::real("Hardening Modulus", "Peridigm's name for the isotropic modulus K").nonNegative());
+  std::vector<ParameterSpec> params = ElasticPlasticMaterial::parameters(true);
+  params.push_back(P::real("Isotropic Hardening Modulus", "the paper's K [Pa], linear in alpha (Eq. 39)")
+                       .nonNegative().byDefault("0"));
+  params.push_back(P::real("Kinematic Hardening Modulus", "the paper's H [Pa], scalar back stress (Eq. 56)")
+                       .nonNegative().byDefault("0"));
+  // No default: given, it selects Peridigm's law (and excludes the paper's two moduli).
+  params.push_back(P::real("Hardening Modulus",
+                           "Peridigm's H: yield when |t^d|^2/2 - psi0 - H lambda > 0 (elastic_plastic_hardening.cxx; "
+                           "3D); H in psi per unit lambda, not Pa")
+                       .nonNegative());
   return {"Elastic Plastic Hardening",
-          "OSB J2 plasticity with linear isotropic and kinematic hardening (Pirzadeh et al. 2024)", params,
+          "OSB J2 plasticity with linear hardening: Peridigm's law (Hardening Modulus) or isotropic and kinematic "
+          "hardening (Pirzadeh et al. 2024)", params,
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, true)); },
           ElasticPlasticMaterial::outputs()};
 }

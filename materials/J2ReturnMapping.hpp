@@ -43,6 +43,8 @@ struct OsbJ2Constants {
   double bm;                // B/m_i = -B of Eq. 48 (B = 15 mu or 8 mu)
   double g2;                // x-component of t^d decays as 1/(1 + g2 bm dlambda), the rest as Eq. 47
   double yieldStress, isoHardening, kinHardening;  // sigma_y0, K, H
+  bool peridigmLaw;         // Peridigm's hardening law with H = peridigmH (PeridigmHardening.hpp); K, H unused
+  double peridigmH;
   double tolerance;         // on Eq. 50 written as sigma_vm - sigma_bar, relative to sigma_vm,tr
   int maxIterations;        // Newton updates
 };

@@ -7,6 +7,7 @@
 #include "core/Material.hpp"
 #include "J2ReturnMapping.hpp"
 #include "OsbBondLoops.hpp"
+#include "PeridigmHardening.hpp"
 
 namespace pf {
 
@@ -73,11 +74,32 @@ PF_INLINE NewtonResult returnToYieldSurface(const TrialSplit& tr, double sbarN, 
   }
 }
 
+// Peridigm's law (elastic_plastic_hardening.cxx, 3D): dlambda from its cubic, t^d_n+1 = t^d_tr / (1 + bm
+// dlambda) for every bond (G1 = G2), yield value psi0 = Cy sigma_y0^2 raised by H lambda. Von Mises and the
+// equivalent plastic strain are reported as the paper defines them (Eqs. 20, 55), for output only.
+PF_INLINE OsbJ2Return peridigmReturn(const OsbTrialMoments& t, const OsbJ2NodeState& n, const OsbJ2Constants& k) {
+  const double psi0 = k.yield.Cy * k.yieldStress * k.yieldStress;
+  const double dl = peridigmDeltaLambda(std::sqrt(t.S2), n.lambda, psi0, k.bm, k.peridigmH);
+  const double G = 1.0 / (1.0 + k.bm * dl);
+  OsbJ2Return r{};
+  r.pp = t.Sx / t.Xx;
+  r.vonMisesTrial = std::sqrt(0.5 * t.S2 / k.yield.Cy);
+  r.yieldLevel = std::sqrt((psi0 + k.peridigmH * n.lambda) / k.yield.Cy);
+  r.dlambda = dl;
+  r.G1 = r.G2 = G;
+  r.vonMises = G * r.vonMisesTrial;
+  r.plasticStrain = dl * G * std::sqrt(k.yield.Ce * 0.5 * t.S2);
+  r.state = {n.lambda + dl, n.alpha + r.plasticStrain, n.q, vonMisesSign(t, n.sign)};
+  r.status = OsbJ2Status::Ok;
+  return r;
+}
+
 // The body of osbJ2ReturnMapping, inlined into each clone of the kernel. As a call per node it made the J2
 // kernel execute 1.1 % more instructions (callgrind, AVX2 clone, 16^3 hardening cube; inlined: +0.15 %)
 // and run ~5 % slower on bench/kernel_hardening_40.xml (noisy host).
 PF_INLINE OsbJ2Return returnMapping(const OsbTrialMoments& trial, const OsbJ2NodeState& committed,
                                     const OsbJ2Constants& k) {
+  if (k.peridigmLaw) return peridigmReturn(trial, committed, k);
   const TrialSplit tr = splitTrial(trial, k.yield);
   const double sgn = vonMisesSign(trial, committed.sign);
   // Direction of plastic flow along the loading axis, sign(sigma_vm - q) of Eqs. 45-46, 56.
@@ -150,6 +172,8 @@ J2Flow j2Flow(const J2Parameters& p) {
   f.ret.yieldStress = p.yieldStress;
   f.ret.isoHardening = p.isoHardening;
   f.ret.kinHardening = p.kinHardening;
+  f.ret.peridigmLaw = p.peridigmLaw;
+  f.ret.peridigmH = p.peridigmHardening;
   f.ret.tolerance = p.tolerance;
   f.ret.maxIterations = p.maxIterations;
   return f;
@@ -212,14 +236,16 @@ PF_INLINE double updatePlasticExtension(const double* __restrict w, const double
 }
 
 // Force from the updated state, written as osbElasticForce writes it (t = t^iso + t^d, Eqs. 7-13
-// with e^d - e^dp), along the deformed bond.
+// with e^d - e^dp), along the deformed bond. B: c.B, times Peridigm's shear correction factor if on -- it
+// scales the whole deviatoric state, its -c theta x part included (elastic_plastic_hardening.cxx).
 template <bool Unit>
 PF_INLINE void addJ2BondForces(const FamilyView& fam, const OsbConstants& c, int i, const osb::FamilyScratch& scr,
                                bool inBlock, const double* __restrict w, const double* __restrict xr,
-                               const double* __restrict ep, double theta, double invm, osb::Quad* force) {
+                               const double* __restrict ep, double theta, double invm, double B,
+                               osb::Quad* force) {
   const double* __restrict len = scr.len;
-  const double iso = (c.A - c.B * c.c) * theta * invm;
-  const double dev = c.B * invm;
+  const double iso = (c.A - B * c.c) * theta * invm;
+  const double dev = B * invm;
   auto forceOverLength = [&](int k, auto ch) {  // s = t / |y_j - y_i|; e^dp = 0 gives the elastic s
     const osb::Lanes x = ch.load(xr + k), l = ch.load(len + k, 1.0);
     return osb::weighted<Unit>(ch, w, k, iso * x + dev * ((l - x) - ch.load(ep + k))) / l;
@@ -258,7 +284,10 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
   const double invm = 1.0 / m;
   OsbJ2Constants k = flow.ret;
   k.yield = osbYieldConstants(p.dim, yieldVolume(fam, p, m));
-  k.bm = c.B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
+  // Peridigm's correction: deviatoric modulus times s, yield value times s^2 (exact no-ops when off).
+  const double B = s.scf ? c.B * s.scf[i] : c.B;
+  k.bm = B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
+  if (s.scf) k.yield.Cy *= s.scf[i] * s.scf[i];
 
   // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
   // osbDilatation so that the elastic response is bit-identical to "Elastic".
@@ -283,7 +312,7 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
     for (int b = 0; b < n; ++b) ep[b] = epN[b];  // every trial value is written: StateStore::commit swaps
   }
   storeNodeState(s, i, r, theta);
-  addJ2BondForces<Unit>(fam, c, i, scr, inBlock, w, xr, ep, theta, invm, force);
+  addJ2BondForces<Unit>(fam, c, i, scr, inBlock, w, xr, ep, theta, invm, B, force);
 }
 
 // The kernel for one influence kind; Unit: omega = 1 everywhere, the array is not read.

@@ -22,7 +22,10 @@ struct J2Parameters {
   double yieldStress = 0.0;        // sigma_y0
   double isoHardening = 0.0;       // K
   double kinHardening = 0.0;       // H
-  YieldNormalization norm = YieldNormalization::Discrete;
+  YieldNormalization norm = YieldNormalization::Continuum;
+  // Peridigm's "Hardening Modulus" H and its law (PeridigmHardening.hpp) instead of K and H above.
+  bool peridigmLaw = false;
+  double peridigmHardening = 0.0;
   int maxIterations = 10;
   double tolerance = 1e-12;        // relative residual of Eq. 50 (written as sigma_vm - sigma_bar)
 };
@@ -37,6 +40,10 @@ struct J2Fields {
   const double* signN; double* sign;          // Von_Mises_Sign: +1/-1, 0 = never set (taken as +1)
   double* vonMises; double* signedVonMises; double* theta;
   double* iterations;                         // Newton iterations of the last update (0 if elastic)
+  // Per node: Peridigm's shear correction factor s (ShearCorrectionFactor.hpp), or null for s = 1. It
+  // scales the deviatoric modulus (15 mu s / m) and the yield value (s^2 psi0), as Peridigm's
+  // elastic_plastic_hardening.cxx does.
+  const double* scf = nullptr;
 };
 
 // Updates the plastic state of owned nodes [fam.begin, fam.end) from the committed state and adds the

@@ -1,12 +1,16 @@
 #include "SolidParameters.hpp"
 
+#include "core/InputError.hpp"
+#include "core/Log.hpp"
+#include "core/MaterialEntry.hpp"
+
 namespace pf {
 
-std::vector<ParameterSpec> elasticSolidParameters() {
+std::vector<ParameterSpec> elasticSolidParameters(ShearCorrection scf) {
   using P = ParameterSpec;
   // Ranges the input layer enforces; which two moduli are given, and whether they make a positive bulk
   // and shear modulus, is checked where they are combined (elasticModuliFrom).
-  return {
+  std::vector<ParameterSpec> params = {
       P::real("Density", "mass density [kg/m^3]").need().positive(),
       P::real("Bulk Modulus", "give exactly two of the four elastic constants").positive(),
       P::real("Shear Modulus").positive(),
@@ -15,11 +19,37 @@ std::vector<ParameterSpec> elasticSolidParameters() {
       P::flag("Plane Stress", "2D plane-stress model (points in z = 0, needs Thickness)").byDefault("false"),
       P::flag("Plane Strain", "2D plane-strain model (points in z = 0, needs Thickness)").byDefault("false"),
       P::real("Thickness", "out-of-plane thickness of a 2D model [m]").positive(),
-      // Peridigm options accepted for deck compatibility; Periforge's tangent is analytic and its
-      // influence function is set under Discretization, so these change nothing.
+      // Peridigm option accepted for deck compatibility; Periforge's tangent is analytic or numerical by
+      // solver, so it changes nothing.
       P::flag("Apply Automatic Differentiation Jacobian", "accepted, ignored (Peridigm)").byDefault("false"),
-      P::flag("Apply Shear Correction Factor", "accepted; only false is supported").byDefault("false"),
   };
+  if (scf == ShearCorrection::Peridigm3D)
+    // No default in the spec: it depends on the dimension (Peridigm's factor is a 3D construction).
+    params.push_back(P::flag("Apply Shear Correction Factor",
+                             "Peridigm's per-node shear correction factor (docs/materials.md); default true in "
+                             "3D as in Peridigm, false in 2D (true is an error there)"));
+  else
+    params.push_back(P::flag("Apply Shear Correction Factor",
+                             "Peridigm's model of this name has no shear correction: true is ignored, with a "
+                             "warning, as Peridigm ignores it").byDefault("false"));
+  return params;
+}
+
+bool shearCorrectionOf(const MaterialInput& in, Dimension dim) {
+  if (!in.has("Apply Shear Correction Factor")) return dim == Dimension::ThreeD;
+  const bool on = in.flag("Apply Shear Correction Factor");
+  if (on && dim != Dimension::ThreeD)
+    throw InputError(in.inputFile + ": material '" + in.name + "': 'Apply Shear Correction Factor' is true, "
+                     "but Peridigm's shear correction factor is defined for 3D families only; set it false for "
+                     "Plane Stress / Plane Strain");
+  return on;
+}
+
+bool ignoredShearCorrection(const MaterialInput& in, const std::string& model) {
+  if (in.has("Apply Shear Correction Factor") && in.flag("Apply Shear Correction Factor"))
+    warn(in.inputFile + ": material '" + in.name + "': 'Apply Shear Correction Factor' = true is ignored: "
+         "Peridigm's '" + model + "' model has no shear correction (it ignores the parameter too)");
+  return false;
 }
 
 }  // namespace pf

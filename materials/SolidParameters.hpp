@@ -1,12 +1,28 @@
 #pragma once
-// Parameters every OSB solid accepts: density, elastic moduli (any two), planar options, and Peridigm
-// options that Periforge accepts but does not need.
+// Parameters every OSB solid accepts: density, elastic moduli (any two), planar options, and the Peridigm
+// options: "Apply Shear Correction Factor" as each Peridigm model treats it, and ones Periforge ignores.
+#include <string>
 #include <vector>
 
+#include "core/Dimension.hpp"
 #include "core/Parameters.hpp"
 
 namespace pf {
 
-std::vector<ParameterSpec> elasticSolidParameters();
+struct ParameterValues;
+using MaterialInput = ParameterValues;
+
+// How a model treats "Apply Shear Correction Factor", as its Peridigm namesake does.
+enum class ShearCorrection {
+  IgnoredAsPeridigm,  // Peridigm's Elastic / Elastic Plastic have none: default false, true ignored + warning
+  Peridigm3D,         // Peridigm's Elastic Plastic Hardening: applied, default true in 3D (false in 2D)
+};
+
+std::vector<ParameterSpec> elasticSolidParameters(ShearCorrection scf = ShearCorrection::IgnoredAsPeridigm);
+
+// Peridigm3D: whether the factor is applied (given value, else 3D); InputError for true in 2D.
+bool shearCorrectionOf(const MaterialInput& in, Dimension dim);
+// IgnoredAsPeridigm: warns when the deck asks for it; always false.
+bool ignoredShearCorrection(const MaterialInput& in, const std::string& model);
 
 }  // namespace pf

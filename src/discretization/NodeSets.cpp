@@ -112,7 +112,8 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const std::vector<NodeSe
         ids.insert(ids.end(), more.begin(), more.end());
       });
     }
-    if (sets.count(name)) fail(inputFile, path, "node set name clashes with a generated or built-in node set");
+    // A set the deck defines replaces a built-in or generated one of the same name (the input layer has
+    // warned): Peridigm has no built-in sets, so a Peridigm deck's "All" is its own.
     std::sort(ids.begin(), ids.end());
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     // A set emptied by dropped ids is kept (Peridigm's conditions on it then act on no node); one that lists

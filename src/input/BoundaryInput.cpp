@@ -5,6 +5,7 @@
 
 #include "Input.hpp"
 #include "Sections.hpp"
+#include "core/Log.hpp"
 
 namespace pf {
 
@@ -70,7 +71,7 @@ std::vector<ParameterSpec> conditionSpecs() {
                           "`Pressure` (on the surface whose outer layer of points is the node set)")
               .need().oneOf({"Prescribed Displacement", "Initial Displacement", "Initial Velocity", "Body Force",
                              "Pressure"}),
-          S::text("Node Set", "a node-set name (`All`: every node)").need(),
+          S::text("Node Set", "a node-set name (`All`: every node, unless the deck defines its own `All`)").need(),
           S::text("Coordinate", "`x`, `y` or `z`; required, except for `Pressure` (which acts along the surface's "
                                 "normal)").oneOf({"x", "y", "z"}),
           S::scalar("Value", "expression in `x`, `y`, `z` (reference coordinates) and `t`; for `Pressure` the "
@@ -83,16 +84,17 @@ std::vector<ParameterSpec> conditionSpecs() {
 std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string>& generated, const std::string& file,
                                        const std::string& dir) {
   const std::string path = "Boundary Conditions";
-  std::set<std::string> names = generated;
-  names.insert("All");
   std::vector<NodeSetSpec> out;
   for (auto it = bcs.begin(); it != bcs.end(); ++it) {
     const std::string& name = bcs.name(it);
     if (!isNodeSetEntry(bcs, name)) continue;
     const Teuchos::ParameterEntry& e = bcs.entry(it);
-    if (!names.insert(name).second)
-      fail(file, path, "node set '" + name + "' clashes with a " +
-                           (name == "All" ? std::string("built-in") : std::string("generated")) + " node set");
+    // The deck's own set wins over a built-in ("All") or generated ("Left Layer", ...) set of the same name:
+    // Peridigm has no built-in sets, so a Peridigm deck that defines "All" means its own (resolveNodeSets).
+    if (name == "All" || generated.count(name))
+      warn(file + ": " + path + ": node set '" + name + "' defined by the deck replaces the " +
+           (name == "All" ? std::string("built-in set of every node") : std::string("generated set")) +
+           " of that name");
     if (e.isList()) {
       out.push_back(regionSpec(bcs.sublist(name), name, file));
       continue;

@@ -1,9 +1,10 @@
 # Peridigm's own regression decks (../shared/reference/peridigm, beside the checkout), run unmodified
 # and compared with Peridigm's gold Exodus files within Peridigm's .comp tolerances, at np = 1 and 2.
-# Also: the NOX solver on the 3D bar against the ADR answer.
+# ep_cube: Peridigm's Elastic Plastic (8 points, Verlet, yielding) with Periforge's defaults, i.e. Peridigm's
+# yield normalisation. Also: the NOX solver on the 3D bar against the ADR answer.
 set(PERIDIGM_REF ${PROJECT_SOURCE_DIR}/../shared/reference/peridigm)
 if(EXISTS ${PERIDIGM_REF})
-  foreach(deck Compression_QS_3x2x2 Compression_QS_3x2x2_TextFile)
+  foreach(deck Compression_QS_3x2x2 Compression_QS_3x2x2_TextFile ep_cube)
     foreach(np 1 2)
       periforge_run(peridigm_${deck}_np${np} ${PERIDIGM_REF}/${deck}/${deck}.xml ${np})
       periforge_check(peridigm_${deck}_np${np}_vs_gold peridigm_${deck}_np${np}
@@ -53,4 +54,12 @@ foreach(np 1 2)
   periforge_check(peridigm_compat_default_block_np${np}_check peridigm_compat_default_block_np${np}
     ${PY} ${REG}/compat/check_compat_default_block.py
     ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_default_block_np${np}/compat_default_block.e)
+endforeach()
+
+# A deck's own node set named "All" wins over the built-in set of every node (Peridigm has none of that name).
+foreach(np 1 2)
+  periforge_run(peridigm_compat_user_all_np${np} ${REG}/compat/compat_user_all.xml ${np})
+  periforge_check(peridigm_compat_user_all_np${np}_check peridigm_compat_user_all_np${np}
+    ${PY} ${REG}/compat/check_compat_user_all.py
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_user_all_np${np}/compat_user_all.e)
 endforeach()

@@ -40,7 +40,9 @@ inline Sym pathTensor(Path p, double s) {
 inline std::map<std::string, double> j2Values(pf::Dimension dim, double K, double H) {
   std::map<std::string, double> v = {{"Density", 8000.0}, {"Young's Modulus", kE}, {"Poisson's Ratio", kNu},
                                      {"Yield Stress", kSy}, {"Isotropic Hardening Modulus", K},
-                                     {"Kinematic Hardening Modulus", H}};
+                                     {"Kinematic Hardening Modulus", H},
+                                     // the paper's model: without Peridigm's factor (default true in 3D)
+                                     {"Apply Shear Correction Factor", 0.0}};
   if (dim == pf::Dimension::PlaneStress) { v["Plane Stress"] = 1.0; v["Thickness"] = kDx; }
   if (dim == pf::Dimension::PlaneStrain) { v["Plane Strain"] = 1.0; v["Thickness"] = kDx; }
   return v;

@@ -139,11 +139,55 @@ TEST(ElasticPlastic, InputHandling) {
   ASSERT_NE(pf::findMaterial("Elastic Plastic"), nullptr);
   ASSERT_NE(pf::findMaterial("Elastic Plastic Hardening"), nullptr);
   auto v = j2Values(Dimension::ThreeD, 1e9, 0);
+  v.erase("Apply Shear Correction Factor");
+  {  // Peridigm's defaults: the paper's (continuum) yield constants and, in 3D, the shear correction
+    auto m = pf::makeMaterial("Elastic Plastic Hardening", v);
+    const auto& ep = static_cast<pf::ElasticPlasticMaterial&>(*m);
+    EXPECT_EQ(ep.j2().norm, pf::YieldNormalization::Continuum);
+    EXPECT_TRUE(ep.shearCorrection());
+    EXPECT_FALSE(ep.j2().peridigmLaw);  // the paper's K and H
+    EXPECT_EQ(ep.j2().isoHardening, 1e9);
+  }
+  // Peridigm's H and the paper's moduli are two laws: an error naming the file and both parameters.
   v["Hardening Modulus"] = 1e9;
-  EXPECT_THROW(pf::makeMaterial("Elastic Plastic Hardening", v), pf::InputError);
+  try {
+    pf::makeMaterial("Elastic Plastic Hardening", v);
+    ADD_FAILURE() << "no InputError";
+  } catch (const pf::InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("'Hardening Modulus'"), std::string::npos) << what;
+    EXPECT_NE(what.find("'Isotropic Hardening Modulus'"), std::string::npos) << what;
+    EXPECT_NE(what.find("'Kinematic Hardening Modulus'"), std::string::npos) << what;  // given as 0: still given
+  }
   v.erase("Isotropic Hardening Modulus");
-  auto m = pf::makeMaterial("Elastic Plastic Hardening", v);
-  EXPECT_EQ(static_cast<pf::ElasticPlasticMaterial&>(*m).j2().isoHardening, 1e9);
+  EXPECT_THROW(pf::makeMaterial("Elastic Plastic Hardening", v), pf::InputError);  // with Kinematic only
+  v.erase("Kinematic Hardening Modulus");
+  {
+    auto m = pf::makeMaterial("Elastic Plastic Hardening", v);
+    EXPECT_TRUE(static_cast<pf::ElasticPlasticMaterial&>(*m).j2().peridigmLaw);
+    EXPECT_EQ(static_cast<pf::ElasticPlasticMaterial&>(*m).j2().peridigmHardening, 1e9);
+    EXPECT_EQ(static_cast<pf::ElasticPlasticMaterial&>(*m).j2().isoHardening, 0.0);
+  }
+  {  // Peridigm's law is 3D only; its factor too (false is the 2D default)
+    auto planar = j2Values(Dimension::PlaneStress, 0, 0);
+    planar.erase("Isotropic Hardening Modulus");
+    planar.erase("Kinematic Hardening Modulus");
+    planar["Hardening Modulus"] = 1e9;
+    EXPECT_THROW(pf::makeMaterial("Elastic Plastic Hardening", planar), pf::InputError);
+    planar.erase("Hardening Modulus");
+    planar.erase("Apply Shear Correction Factor");
+    EXPECT_FALSE(static_cast<pf::ElasticPlasticMaterial&>(*pf::makeMaterial("Elastic Plastic Hardening", planar))
+                     .shearCorrection());
+    planar["Apply Shear Correction Factor"] = 1.0;
+    EXPECT_THROW(pf::makeMaterial("Elastic Plastic Hardening", planar), pf::InputError);
+  }
+  {  // Peridigm's Elastic Plastic has no factor: true is ignored (with a warning), as Peridigm ignores it
+    auto p = j2Values(Dimension::ThreeD, 0, 0);
+    p.erase("Isotropic Hardening Modulus");
+    p.erase("Kinematic Hardening Modulus");
+    p["Apply Shear Correction Factor"] = 1.0;
+    EXPECT_FALSE(static_cast<pf::ElasticPlasticMaterial&>(*pf::makeMaterial("Elastic Plastic", p)).shearCorrection());
+  }
   EXPECT_THROW(pf::makeMaterial("Elastic Plastic Hardening", v, {{"Yield Normalization", "Bogus"}}), pf::InputError);
   v.erase("Yield Stress");
   EXPECT_THROW(pf::makeMaterial("Elastic Plastic Hardening", v), pf::InputError);
