@@ -10,3 +10,11 @@ foreach(np 1 2)
     set_tests_properties(reliability_${case}_np${np} PROPERTIES TIMEOUT 60 LABELS "regression" PROCESSORS ${np})
   endforeach()
 endforeach()
+
+# The issue's own case: the coarse plate (NOX) killed with kill -9 mid-way leaves the previous result untouched.
+foreach(np 1 2)
+  add_test(NAME reliability_plate_sigkill_np${np}
+           COMMAND ${PY} ${REL}/run_reliability.py plate_sigkill ${np} ${PERIFORGE_EXE}
+                   ${CMAKE_CURRENT_SOURCE_DIR}/regression/plate/plate_iso_coarse_nox.xml ${MPIRUN})
+  set_tests_properties(reliability_plate_sigkill_np${np} PROPERTIES TIMEOUT 120 LABELS "regression" PROCESSORS ${np})
+endforeach()

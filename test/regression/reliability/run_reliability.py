@@ -197,6 +197,36 @@ def case_sigkill(cmd, work, base, direct):
     check(after == before, "the rerun's result differs from the first run's")
 
 
+def plate_deck(work, base, steps):
+    """The coarse plate (NOX, one load step per unit time) cut to its first `steps` load steps, writing 'rel'."""
+    text = open(base).read()
+    text = re.sub(r'(name="Output Filename" type="string" value=")[^"]*', r"\g<1>rel", text)
+    text = re.sub(r'(name="Final Time" type="double" value=")[^"]*', r"\g<1>%d.0" % steps, text)
+    text = re.sub(r'(name="Number of Load Steps" type="int" value=")[^"]*', r"\g<1>%d" % steps, text)
+    path = os.path.join(work, "plate_%d.xml" % steps)
+    open(path, "w").write(text)
+    return path
+
+
+def case_plate_sigkill(cmd, work, base, direct):
+    """The issue's case: a run of the coarse plate killed mid-way (kill -9, every rank) leaves the previous
+    result byte-identical (base: test/regression/plate/plate_iso_coarse_nox.xml)."""
+    code, err = run(cmd + [plate_deck(work, base, 3)], work)
+    check(code == 0, "the good run failed (%d): %s" % (code, err[-300:]))
+    before = digest(work)
+    p = start(cmd, work, plate_deck(work, base, 120))
+    killed = []
+    if wait_rows(work, 3, p):
+        killed = ranks(p, direct)
+        for pid in killed:
+            os.kill(pid, signal.SIGKILL)
+    p.communicate(timeout=LIMIT)
+    gone(killed)
+    untouched(work, before)
+    check(status(work).startswith("running (pid"), "rel.status: %r" % status(work))
+    check(os.path.exists(os.path.join(work, "rel.csv.part")), "no rel.csv.part of the killed run")
+
+
 def main():
     case, np, exe, base = sys.argv[1], int(sys.argv[2]), sys.argv[3], os.path.abspath(sys.argv[4])
     mpirun = sys.argv[5:]
@@ -208,7 +238,8 @@ def main():
         if case in cases:
             cases[case](cmd, work, base)
         else:
-            {"concurrent": case_concurrent, "sigterm": case_sigterm, "sigkill": case_sigkill}[case](
+            {"concurrent": case_concurrent, "sigterm": case_sigterm, "sigkill": case_sigkill,
+             "plate_sigkill": case_plate_sigkill}[case](
                 cmd, work, base, direct)
     print("%s np %d: %s" % (case, np, "PASS" if not problems else "FAIL\n  " + "\n  ".join(problems)))
     return 1 if problems else 0
