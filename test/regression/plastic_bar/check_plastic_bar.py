@@ -13,7 +13,8 @@ Measured from the run (history CSV):
     equivalent plastic strain of the probe Mid at the bar's centre;
   - the reaction on the right layer, F_x.
 Checks (each bound and its reason is in test/regression/plastic_bar.cmake, which passes them):
-  1. interior stress: |svm_Mid - sigma_1D(eps_interior)| <= --stress-tol * sigma_y at every step;
+  1. interior stress: |svm_Mid - sigma_1D(eps_interior)| <= --stress-tol * sigma_y at every step, and in
+     the elastic steps svm_Mid / (E eps_interior) within --stiffness-tol of 1;
   2. interior plastic strain at the peak and at the end within --alpha-tol of the closed form's;
   3. reverse yield of the interior point (first step after the peak in which alpha_Mid grows) and of the
      reaction (first step after the peak whose |dF| falls below 90 % of the first unloading step's) each
@@ -67,6 +68,7 @@ def main(argv):
     p.add_argument("--gauge", type=float, required=True, help="distance between probes Q1 and Q3 [m]")
     p.add_argument("--stress-tol", type=float, required=True)
     p.add_argument("--alpha-tol", type=float, required=True)
+    p.add_argument("--stiffness-tol", type=float, default=0.01)
     p.add_argument("--yield-steps", type=int, default=1)
     p.add_argument("--reaction-min", type=float, required=True)
     p.add_argument("--reaction-max", type=float, required=True)
@@ -99,6 +101,13 @@ def main(argv):
     report("interior stress vs sigma_1D", d[k] <= a.stress_tol,
            "max %.3f %% of sigma_y at step %d (%.1f vs %.1f MPa); bound %.2f %%"
            % (100 * d[k], k + 1, svm[k] / 1e6, ref_int[k][0] / 1e6, 100 * a.stress_tol))
+    # 1b. interior elastic stiffness: the steps before the closed form first yields
+    el = [k for k in range(ipeak) if not ref_int[k][1] > 0]
+    st = [svm[k] / (a.E * eps_int[k]) - 1 for k in el]
+    kk = max(range(len(st)), key=lambda i: abs(st[i]))
+    report("interior elastic stiffness", abs(st[kk]) <= a.stiffness_tol,
+           "svm_Mid / (E eps_interior) - 1 up to %+.3f %% (step %d, %d elastic steps); bound %.1f %%"
+           % (100 * st[kk], el[kk] + 1, len(el), 100 * a.stiffness_tol))
     # 2. interior plastic strain at the peak and at the end
     for k in (ipeak, len(t) - 1):
         e = abs(alpha[k] - ref_int[k][1]) / ref_int[k][1]
