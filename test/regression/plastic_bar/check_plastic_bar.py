@@ -84,6 +84,11 @@ def main(argv):
     except (OSError, KeyError, ValueError) as e:
         sys.stderr.write("check_plastic_bar: error: %s\n" % e)
         return 2
+    return 0 if checks(a, t, F, eps_int, svm, alpha) else 1
+
+
+def checks(a, t, F, eps_int, svm, alpha):
+    """Runs checks 1-5, prints one line each; True when all pass."""
     applied = [a.rate * (ti if ti <= a.peak else 2 * a.peak - ti) for ti in t]
     ref = closed_form(applied, a.E, a.sy, a.K, a.H)          # the bar as loaded
     ref_int = closed_form(eps_int, a.E, a.sy, a.K, a.H)      # the interior as strained
@@ -149,7 +154,7 @@ def main(argv):
                "%.4e vs A E (K+H)/(E+K+H) = %.4e N (%+.2f %%, steps %d-%d); bound %.0f %%"
                % (slope, want, 100 * e, k0 + 1, k1 + 1, 100 * a.slope_tol))
     print("check_plastic_bar: PASS" if ok else "check_plastic_bar: FAIL")
-    return 0 if ok else 1
+    return ok
 
 
 if __name__ == "__main__":
