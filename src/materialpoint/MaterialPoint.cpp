@@ -1,5 +1,6 @@
 #include "MaterialPoint.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/InputError.hpp"
@@ -23,7 +24,8 @@ std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<
   return entry->create(in);
 }
 
-MaterialPoint::MaterialPoint(const Material& mat, double dx, double ratio, double thickness, bool partialVolume)
+MaterialPoint::MaterialPoint(const Material& mat, double dx, double ratio, double thickness, bool partialVolume,
+                             const Influence& influence)
     : mat_(mat) {
   const bool planar = isPlanar(mat.dimension());
   const double horizon = ratio * dx;
@@ -43,8 +45,10 @@ MaterialPoint::MaterialPoint(const Material& mat, double dx, double ratio, doubl
   volume_.assign(numPoints, planar ? dx * dx * thickness : dx * dx * dx);
   const std::array<double, 3> cell = {dx, dx, planar ? 0.0 : dx};
   buildFamilies(x_, 1, {horizon}, family_, partialVolume ? &cell : nullptr);
-  family_.influence.assign(family_.numBonds(), 1.0);  // omega = 1, as in the paper
-  family_.unitInfluence = true;
+  family_.influence.resize(family_.numBonds());  // omega = 1 (the paper's) unless asked otherwise
+  for (std::size_t b = 0; b < family_.numBonds(); ++b)
+    family_.influence[b] = influenceValue(influence, std::min(family_.refLength[b], horizon), horizon);
+  family_.unitInfluence = influence.kind == Influence::One;
   m_.assign(numPoints, 0.0);
   view_ = makeView(family_, 0, 1, x_.data(), volume_.data(), m_.data(), horizon);
   computeWeightedVolume(view_, m_.data());

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/BondFamily.hpp"
+#include "core/InfluenceFunction.hpp"
 #include "core/Material.hpp"
 #include "core/StateStore.hpp"
 
@@ -22,8 +23,10 @@ std::unique_ptr<Material> makeMaterial(const std::string& model, const std::map<
 class MaterialPoint {
  public:
   // thickness: out-of-plane thickness of the nodal volumes of a 2D model (ignored in 3D); partialVolume:
-  // weight the bonds by the share of their cell inside the horizon (PartialVolume.hpp).
-  MaterialPoint(const Material& mat, double dx, double ratio, double thickness = 0.0, bool partialVolume = false);
+  // weight the bonds by the share of their cell inside the horizon (PartialVolume.hpp); influence: omega
+  // of each bond, evaluated as the solver's layout does (at min(|xi|, delta) with partial volumes).
+  MaterialPoint(const Material& mat, double dx, double ratio, double thickness = 0.0, bool partialVolume = false,
+                const Influence& influence = Influence(Influence::One));
 
   void deform(const std::array<double, 9>& F);  // y = F X, F row-major
   void evaluate();                              // trial state of the centre (may throw ConstitutiveFailure)

@@ -23,3 +23,31 @@ periforge_check(plate_iso_coarse_nox_vs_adr plate_iso_coarse_nox_np2
   ${CMAKE_CURRENT_BINARY_DIR}/regression/plate_iso_coarse_nox_np2/plate_iso_coarse_nox.csv
   ${REG}/plate/plate_iso_coarse_adr_tight_gold.csv
   ${plate_tols})
+
+# The same np = 2 run against the independent FE solution (CalculiX, ${PERIFORGE_SHARED_DIR}/reference/calculix;
+# scripts/validate_plate, which exits 1 on a missed bound and 2 when the FE file is missing -- then this test
+# fails, see test/CMakeLists.txt). Measured (2026-12-02, the np = 2 run): F_x max 4.33 % off FE (step 37,
+# -4 599 vs -4 408 N) over the 108 steps where |F_FE| > 10 % of its peak; residual F_x at steps 40 / 80 / 120
+# -3.7 / +3.3 / -1.2 %; plastic strain at B (FE on the ligament at the node's y) -23.5 / -11.6 / -6.7 % at
+# steps 20 / 60 / 100. Bounds: F_x 4.8 % (measured + 0.47 %-points: np = 1 vs np = 2 differ by <= 2 N, 0.05 %
+# of the step-37 force; the rest is room for compiler/BLAS round-off carried along a 120-step plastic history;
+# a 5 % error of sigma_y or a 5 % thickness error moves F_x by 4-5 % at the peaks and fails); residual 6 %
+# (measured + 2.3 %-points, same reasons, on a force 20x smaller); plastic strain at B 25 % (issue 5's bound;
+# the coarse grid's -23.5 % at step 20 is the 0.5 mm probe offset and delta = 3 mm smoothing, docs/validation.md).
+# Not judged at this resolution (printed): signed von Mises at B and the plastic-zone area, which the coarse grid
+# misses for the reasons docs/validation.md gives and the paper-resolution run meets.
+periforge_check(plate_iso_coarse_np2_vs_fe plate_iso_coarse_np2
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/validate_plate
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/plate_iso_coarse_np2/plate_iso_coarse.csv
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/plate_iso_coarse_np2/plate_iso_coarse.e
+  --ref-dir ${PERIFORGE_SHARED_DIR}/reference/calculix --only fx,residual,peeq
+  --fx-tol 0.048 --residual-tol 0.06 --peeq-tol 0.25)
+
+# README's and docs/validation.md's numbers for the paper-resolution plate (a 12-minute run, not in ctest),
+# checked on its stored history docs/data/plate_iso_paper.csv against the FE reference: F_x within 1.81 %
+# at each of the 108 steps where |F_FE| > 10 % of its peak (measured 1.80 % at step 37), residuals within 3 %
+# (measured -1.2 / +2.4 / -0.2 %). Bounds: the quoted numbers rounded up at their last digit.
+add_test(NAME plate_iso_paper_history_vs_fe COMMAND ${PY} ${PROJECT_SOURCE_DIR}/scripts/validate_plate
+  ${PROJECT_SOURCE_DIR}/docs/data/plate_iso_paper.csv --ref-dir ${PERIFORGE_SHARED_DIR}/reference/calculix
+  --only fx,residual --fx-tol 0.0181 --residual-tol 0.03)
+set_tests_properties(plate_iso_paper_history_vs_fe PROPERTIES LABELS "regression")

@@ -51,7 +51,7 @@ inline std::map<std::string, double> j2Values(pf::Dimension dim, double K, doubl
 struct PathResult {
   double vmErr = 0;      // max |vm_pd - vm_cl| / sigma_y
   double alphaErr = 0;   // max |alpha_pd - alpha_cl| / max alpha_cl
-  double onsetErr = 0;   // |eps_y,pd / eps_y,cl - 1|
+  double onsetErr = 0;   // |eps_y,pd / eps_y,cl - 1|: strain of first yield along the path (yieldOnset)
   double stressErr = 0;  // max in-plane |sigma_pd - sigma_cl| component / sigma_y (information)
   // Plane stress only (else -1): the same von Mises / alpha errors against the classical model with the
   // PD model's *scalar* back stress (PlaneStressJ2::Kinematic::Scalar) -- the model's own classical
@@ -64,10 +64,64 @@ struct PathResult {
   std::vector<double> strain, vm, svm, alpha, lambda, q;  // per step, peridynamic
 };
 
+inline std::array<double, 9> pathF(pf::Dimension dim, const Sym& e) {
+  std::array<double, 9> F{1, 0, 0, 0, 1, 0, 0, 0, 1};
+  for (int a = 0; a < 9; ++a) F[a] += e[a];
+  if (dim != pf::Dimension::ThreeD) F[8] = 1.0;
+  return F;
+}
+
+// Amplitude s of the path's first loading branch at which the state first yields, from the virgin state in
+// one step (bisection to 1e-12 relative on "yielded = plastic strain > 0"); yielded(s) must not commit.
+template <class Yielded> double firstYield(Yielded yielded, double hi) {
+  double lo = 0;
+  while (!yielded(hi)) hi *= 2;
+  while (hi - lo > 1e-12 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (yielded(mid) ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The yield onset of a material point along the path's loading direction (uniaxial strain for the cyclic
+// path), and of the classical model: an error here is an error of the yield stress as the model sees it,
+// not of the elastic stiffness (which the first path step alone would measure).
+inline double yieldOnsetError(pf::MaterialPoint& mp, pf::Dimension dim, Path path, ClassicalJ2 cl) {
+  const Path dir = path == Path::Shear ? Path::Shear : Path::Uniaxial;
+  const double sPd = firstYield([&](double s) {
+    mp.deform(pathF(dim, pathTensor(dir, s)));
+    mp.evaluate();  // from the committed (virgin) state; never committed
+    return mp.value("Equivalent_Plastic_Strain") > 0;
+  }, 1e-3);
+  const double sCl = firstYield([&](double s) { cl.update(pathTensor(dir, s)); return cl.alphaT > 0; }, 1e-3);
+  return std::fabs(sPd / sCl - 1.0);
+}
+
+struct PathOptions {
+  double amp = 0.012;
+  int steps = 120;
+  std::string norm = "Discrete";
+  bool partialVolume = false;
+  std::string model = "Elastic Plastic Hardening";  // "Elastic Plastic": K and H must be 0
+  pf::Influence influence = pf::Influence(pf::Influence::One);
+};
+
+inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, double H, const PathOptions& o);
+
 inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, double H, double amp = 0.012,
                           int steps = 120, const std::string& norm = "Discrete", bool partialVolume = false) {
-  auto mat = pf::makeMaterial("Elastic Plastic Hardening", j2Values(dim, K, H), {{"Yield Normalization", norm}});
-  pf::MaterialPoint mp(*mat, kDx, ratio, kDx, partialVolume);
+  PathOptions o;
+  o.amp = amp; o.steps = steps; o.norm = norm; o.partialVolume = partialVolume;
+  return runPath(dim, ratio, path, K, H, o);
+}
+
+inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, double H, const PathOptions& o) {
+  const double amp = o.amp;
+  const int steps = o.steps;
+  auto values = j2Values(dim, K, H);
+  if (o.model == "Elastic Plastic") { values.erase("Isotropic Hardening Modulus"); values.erase("Kinematic Hardening Modulus"); }
+  auto mat = pf::makeMaterial(o.model, values, {{"Yield Normalization", o.norm}});
+  pf::MaterialPoint mp(*mat, kDx, ratio, kDx, o.partialVolume, o.influence);
   const ClassicalJ2::Mode mode = dim == pf::Dimension::ThreeD       ? ClassicalJ2::Mode::ThreeD
                                  : dim == pf::Dimension::PlaneStress ? ClassicalJ2::Mode::PlaneStress
                                                                     : ClassicalJ2::Mode::PlaneStrain;
@@ -75,20 +129,17 @@ inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, 
   PlaneStressJ2 sc = PlaneStressJ2::isotropic(kE, kNu, kSy, K, H, PlaneStressJ2::Kinematic::Scalar);
   const bool withScalar = dim == pf::Dimension::PlaneStress;
   PathResult r;
+  r.onsetErr = yieldOnsetError(mp, dim, path, cl);
   if (withScalar) r.vmErrScalar = r.alphaErrScalar = 0;
   double alphaMax = 0, alphaMaxSc = 0, alphaPrevPd = 0, alphaPrevCl = 0;
   bool reversed = false;
   for (int k = 1; k <= steps; ++k) {
     const double s = pathStrain(path, k, steps, amp);
     const Sym e = pathTensor(path, s);
-    std::array<double, 9> F{1, 0, 0, 0, 1, 0, 0, 0, 1};
-    for (int a = 0; a < 9; ++a) F[a] += e[a];
-    if (dim != pf::Dimension::ThreeD) F[8] = 1.0;
-    mp.deform(F);
+    mp.deform(pathF(dim, e));
     mp.evaluate();
     cl.update(e);
     const double vm = mp.value("Von_Mises_Stress"), al = mp.value("Equivalent_Plastic_Strain");
-    if (k == 1) r.onsetErr = std::fabs(cl.vonMises() / vm - 1.0);  // elastic first step: eps_y ~ 1/vm
     if (std::fabs(vm - cl.vonMises()) / kSy > r.vmErr) { r.vmErr = std::fabs(vm - cl.vonMises()) / kSy; r.vmErrStep = k; }
     if (withScalar) {
       sc.update(e);

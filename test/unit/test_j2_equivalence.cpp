@@ -130,23 +130,6 @@ TEST(J2Equivalence, PlaneStressKinematicCyclicModelFormLimit) {
 // delta/dx = 10 (the brief's minimum): monotonic paths are within 1 % in 3D; the rest is the lattice
 // error above (up to 1.9 % in 3D, 4.1 % in plane strain, 3.4 % in plane stress). Guards against
 // regressions at the measured level.
-// The convergence study behind PlaneStressKinematicCyclicModelFormLimit (run with
-// --gtest_also_run_disabled_tests): plane-stress von Mises error (% of sigma_y) against tensor J2 and
-// against the scalar-back-stress J2, and where the tensor error peaks.
-TEST(J2Equivalence, DISABLED_PlaneStressConvergence) {
-  std::printf("| delta/dx | hardening | path | vs tensor J2 | at step | vs scalar-q J2 | eq. plastic strain |\n");
-  std::printf("|---|---|---|---|---|---|---|\n");
-  for (double ratio : {10.0, 12.0, 15.0, 20.0, 30.0, 40.0, 60.0})
-    for (const Hardening& h : kHardening)
-      for (Path path : {Path::Uniaxial, Path::Cyclic}) {
-        if (h.K == 0 && h.H == 0) continue;
-        const PathResult r = runPath(Dimension::PlaneStress, ratio, path, h.K, h.H);
-        std::printf("| %g | %s | %s | %.2f | %d | %.2f | %.2f |\n", ratio, h.name, pathName(path), 100 * r.vmErr,
-                    r.vmErrStep, 100 * r.vmErrScalar, 100 * r.alphaErr);
-      }
-  std::fflush(stdout);
-}
-
 TEST(J2Equivalence, RatioTenWithinMeasuredLatticeError) {
   for (Dimension dim : kDims)
     for (const Hardening& h : kHardening)
@@ -170,28 +153,84 @@ TEST(J2Equivalence, BauschingerReverseYieldWhereClassicalReverses) {
     }
 }
 
-// Error table (model x dimension x path) at delta/dx = 3, 4, 10 (and 15 in 3D, 30 in 2D) for
-// docs/materials.md, for both yield normalisations.
+// Error table (model x dimension x path) at delta/dx = 3, 4, 10 (and 15 in 3D, 30 in 2D), both yield
+// normalisations: printed for docs/materials.md and asserted. Bounds: the largest von Mises / plastic
+// strain / yield-onset error over the 12 cases (hardening x path) of each row, as measured (2026-12-02),
+// rounded up by about 10 % (a regression guard on the table docs/materials.md quotes; the physics bounds
+// are MatchesClassicalJ2's). A change of either normalisation's constant by 2 % moves the onset column
+// by 1 % and fails some row.
+namespace {
+struct TableBound { const char* norm; double ratio; Dimension dim; double vm, alpha, onset; };
+const TableBound kTableBounds[] = {
+    {"Discrete", 3, Dimension::ThreeD, 21.01, 14.06, 10.37},
+    {"Discrete", 3, Dimension::PlaneStrain, 3.03, 3.15, 2.01},
+    {"Discrete", 3, Dimension::PlaneStress, 3.07, 3.15, 2.01},
+    {"Discrete", 4, Dimension::ThreeD, 3.79, 2.35, 1.59},
+    {"Discrete", 4, Dimension::PlaneStrain, 4.05, 4.18, 2.69},
+    {"Discrete", 4, Dimension::PlaneStress, 3.45, 4.18, 2.69},
+    {"Discrete", 10, Dimension::ThreeD, 2.03, 1.15, 0.76},
+    {"Discrete", 10, Dimension::PlaneStrain, 4.48, 4.16, 2.54},
+    {"Discrete", 10, Dimension::PlaneStress, 3.69, 4.16, 2.54},
+    {"Discrete", 15, Dimension::ThreeD, 0.77, 0.30, 0.19},
+    {"Discrete", 30, Dimension::PlaneStrain, 1.07, 0.91, 0.58},
+    {"Discrete", 30, Dimension::PlaneStress, 2.42, 0.91, 0.58},
+    {"Continuum", 3, Dimension::ThreeD, 42.00, 14.93, 19.60},
+    {"Continuum", 3, Dimension::PlaneStrain, 6.35, 5.35, 5.80},
+    {"Continuum", 3, Dimension::PlaneStress, 7.97, 6.39, 5.80},
+    {"Continuum", 4, Dimension::ThreeD, 8.09, 4.42, 5.05},
+    {"Continuum", 4, Dimension::PlaneStrain, 9.93, 5.13, 3.89},
+    {"Continuum", 4, Dimension::PlaneStress, 9.96, 5.13, 2.63},
+    {"Continuum", 10, Dimension::ThreeD, 0.93, 1.36, 0.95},
+    {"Continuum", 10, Dimension::PlaneStrain, 7.07, 4.62, 2.86},
+    {"Continuum", 10, Dimension::PlaneStress, 6.49, 4.62, 1.81},
+    {"Continuum", 15, Dimension::ThreeD, 0.97, 0.30, 0.26},
+    {"Continuum", 30, Dimension::PlaneStrain, 0.81, 0.88, 0.82},
+    {"Continuum", 30, Dimension::PlaneStress, 2.37, 0.88, 0.82},
+};
+}  // namespace
+
 TEST(J2Equivalence, ErrorTable) {
-  for (const char* norm : {"Discrete", "Continuum"}) {
-    std::printf("\nYield Normalization = %s: max |vm - vm_J2|/sy, max |alpha - alpha_J2|/max alpha_J2, "
-                "onset, max in-plane stress component error/sy; plane stress: von Mises against classical J2 with "
-                "the model's scalar back stress (%%)\n", norm);
-    std::printf("| ratio | dim | hardening | path | von Mises | eq. plastic strain | yield onset | stress tensor | Newton its | von Mises vs scalar-q J2 |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
-    for (double ratio : {3.0, 4.0, 10.0, 15.0, 30.0})
-      for (Dimension dim : kDims)
-        for (const Hardening& h : kHardening)
-          for (Path path : {Path::Uniaxial, Path::Cyclic, Path::Shear}) {
-            if ((ratio == 15.0 && dim != Dimension::ThreeD) || (ratio == 30.0 && dim == Dimension::ThreeD)) continue;
-            const PathResult r = runPath(dim, ratio, path, h.K, h.H, 0.012, 120, norm);
-            char sc[16] = "-";
-            if (r.vmErrScalar >= 0) std::snprintf(sc, sizeof sc, "%.2f", 100 * r.vmErrScalar);
-            std::printf("| %g | %s | %s | %s | %.2f | %.2f | %.2f | %.2f | %d | %s |\n", ratio, dimName(dim), h.name,
-                        pathName(path), 100 * r.vmErr, 100 * r.alphaErr, 100 * r.onsetErr, 100 * r.stressErr,
-                        r.maxIterations, sc);
-          }
+  for (const TableBound& b : kTableBounds) {
+    double vm = 0, al = 0, on = 0;
+    for (const Hardening& h : kHardening)
+      for (Path path : {Path::Uniaxial, Path::Cyclic, Path::Shear}) {
+        const PathResult r = runPath(b.dim, b.ratio, path, h.K, h.H, 0.012, 120, b.norm);
+        char sc[16] = "-";
+        if (r.vmErrScalar >= 0) std::snprintf(sc, sizeof sc, "%.2f", 100 * r.vmErrScalar);
+        std::printf("| %s | %g | %s | %s | %s | %.2f | %.2f | %.2f | %.2f | %d | %s |\n", b.norm, b.ratio,
+                    dimName(b.dim), h.name, pathName(path), 100 * r.vmErr, 100 * r.alphaErr, 100 * r.onsetErr,
+                    100 * r.stressErr, r.maxIterations, sc);
+        vm = std::max(vm, 100 * r.vmErr); al = std::max(al, 100 * r.alphaErr); on = std::max(on, 100 * r.onsetErr);
+      }
+    std::printf("max | %s | %g | %s | %.2f | %.2f | %.2f |\n", b.norm, b.ratio, dimName(b.dim), vm, al, on);
+    SCOPED_TRACE(std::string(b.norm) + " " + dimName(b.dim) + " ratio " + std::to_string(b.ratio));
+    EXPECT_LE(vm, b.vm);
+    EXPECT_LE(al, b.alpha);
+    EXPECT_LE(on, b.onset);
   }
+  std::fflush(stdout);
+}
+
+// The plane-stress convergence study behind PlaneStressKinematicCyclicModelFormLimit, cyclic path: von
+// Mises error (% of sigma_y) against tensor J2 and against the scalar-back-stress J2 at delta/dx = 10 ..
+// 60, as docs/materials.md quotes them (to 0.01 %: the numbers are printed to two decimals; round-off
+// of the classical references is 1e-10).
+TEST(J2Equivalence, PlaneStressConvergence) {
+  struct Row { int h; double tensor[7], scalar[7]; };
+  const double ratios[7] = {10, 12, 15, 20, 30, 40, 60};
+  const Row rows[] = {{1, {3.34, 0.49, 2.11, 1.43, 0.97, 0.81, 0.49}, {3.34, 0.49, 2.11, 1.43, 0.97, 0.81, 0.49}},
+                      {2, {1.85, 1.96, 1.88, 1.90, 1.92, 1.93, 1.94}, {1.85, 0.34, 1.16, 0.78, 0.51, 0.43, 0.24}},
+                      {3, {2.39, 2.24, 2.17, 2.18, 2.19, 2.19, 2.20}, {3.08, 0.43, 1.94, 1.31, 0.88, 0.73, 0.43}}};
+  for (const Row& row : rows)
+    for (int k = 0; k < 7; ++k) {
+      const Hardening& h = kHardening[row.h];
+      const PathResult r = runPath(Dimension::PlaneStress, ratios[k], Path::Cyclic, h.K, h.H);
+      std::printf("| %g | %s | cyclic | %.2f | %d | %.2f | %.2f |\n", ratios[k], h.name, 100 * r.vmErr, r.vmErrStep,
+                  100 * r.vmErrScalar, 100 * r.alphaErr);
+      SCOPED_TRACE(std::string(h.name) + " ratio " + std::to_string(ratios[k]));
+      EXPECT_NEAR(100 * r.vmErr, row.tensor[k], 0.0051);
+      EXPECT_NEAR(100 * r.vmErrScalar, row.scalar[k], 0.0051);
+    }
   std::fflush(stdout);
 }
 

@@ -78,23 +78,27 @@ TEST(ElasticPlastic, PerfectPlasticityStaysOnYieldStress) {
   }
 }
 
-// Elastic Plastic == Elastic Plastic Hardening with K = H = 0 (Mitchell's model is the K = H = 0 case).
-TEST(ElasticPlastic, HardeningWithZeroModuliIsPerfectPlasticity) {
-  for (Dimension dim : kDims) {
-    auto v = j2Values(dim, 0, 0);
-    auto hard = pf::makeMaterial("Elastic Plastic Hardening", v);
-    v.erase("Isotropic Hardening Modulus");
-    v.erase("Kinematic Hardening Modulus");
-    auto perf = pf::makeMaterial("Elastic Plastic", v);
-    pf::MaterialPoint a(*hard, kDx, 4.0, kDx), b(*perf, kDx, 4.0, kDx);
-    for (int k = 1; k <= 40; ++k) {
-      const auto F = strainF(pathStrain(Path::Cyclic, k, 40, 0.01), 0, 0, 0, dim);
-      a.deform(F); b.deform(F); a.evaluate(); b.evaluate();
-      EXPECT_EQ(a.value("Von_Mises_Stress"), b.value("Von_Mises_Stress"));
-      EXPECT_EQ(a.value("Equivalent_Plastic_Strain"), b.value("Equivalent_Plastic_Strain"));
-      a.commit(); b.commit();
+// "Elastic Plastic" (Mitchell's perfect plasticity) against the classical perfectly plastic J2 return
+// (ClassicalJ2 with K = H = 0, written in the test), at the ratios and tolerances of
+// J2Equivalence.MatchesClassicalJ2 (1 % of sigma_y in 3D and plane strain, 2 % in plane stress: the
+// lattice's elastic error times the stress swing, reasons there). Then also: it is the K = H = 0 case of
+// "Elastic Plastic Hardening" to the bit (one class, docs/materials.md).
+TEST(ElasticPlastic, MatchesClassicalPerfectPlasticity) {
+  for (Dimension dim : kDims)
+    for (Path path : {Path::Uniaxial, Path::Cyclic, Path::Shear}) {
+      PathOptions o;
+      o.model = "Elastic Plastic";
+      const double ratio = dim == Dimension::ThreeD ? 15.0 : 30.0, tol = dim == Dimension::PlaneStress ? 0.02 : 0.01;
+      const PathResult r = runPath(dim, ratio, path, 0, 0, o);
+      SCOPED_TRACE(std::string(dimName(dim)) + " " + pathName(path));
+      EXPECT_LT(r.vmErr, tol);
+      EXPECT_LT(r.alphaErr, tol);
+      EXPECT_LT(r.onsetErr, tol);
+      o.model = "Elastic Plastic Hardening";
+      const PathResult h = runPath(dim, ratio, path, 0, 0, o);
+      EXPECT_EQ(h.vm, r.vm);
+      EXPECT_EQ(h.alpha, r.alpha);
     }
-  }
 }
 
 // A rigid rotation of the deformed body after plastic loading changes no scalar output.
