@@ -15,6 +15,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from process_kill import kill_every_rank, ranks  # noqa: E402
+
 LIMIT = 45  # seconds for any one run; ctest's TIMEOUT is 60
 problems = []
 
@@ -95,28 +98,6 @@ def wait_rows(work, rows, p):
     return False
 
 
-def ranks(p, direct):
-    """The periforge processes: the launched one (direct) or mpirun's children."""
-    if direct:
-        return [p.pid]
-    out = subprocess.run(["pgrep", "-P", str(p.pid)], capture_output=True, text=True).stdout.split()
-    return [int(x) for x in out]
-
-
-def gone(pids):
-    """Until the killed processes have died (a zombie counts as dead, as for the lock)."""
-    end = time.time() + LIMIT
-    for pid in pids:
-        while time.time() < end:
-            try:
-                state = open("/proc/%d/stat" % pid).read().rsplit(")", 1)[1].split()[0]
-            except (OSError, IndexError):
-                break
-            if state == "Z":
-                break
-            time.sleep(0.05)
-
-
 def case_missing_dir(cmd, work, base):
     code, err = run(cmd + [deck(work, base, name="no_such_dir/rel")], work)
     one_line(code, err, [".xml", "Output Filename", "no_such_dir/rel"])
@@ -183,13 +164,10 @@ def case_sigkill(cmd, work, base, direct):
     """kill -9 of every rank: the previous result survives; the next run takes the dead run's lock over."""
     before = previous_result(cmd, work, base)
     p = start(cmd, work, long_deck(work, base))
-    killed = []
     if wait_rows(work, 2, p):
-        killed = ranks(p, direct)
-        for pid in killed:
-            os.kill(pid, signal.SIGKILL)
-    p.communicate(timeout=LIMIT)
-    gone(killed)
+        kill_every_rank(p, direct, LIMIT)
+    else:
+        p.communicate(timeout=LIMIT)
     untouched(work, before)
     check(status(work).startswith("running (pid"), "rel.status: %r" % status(work))
     check(os.path.exists(os.path.join(work, "rel.lock")), "no stale rel.lock to take over")
@@ -215,13 +193,10 @@ def case_plate_sigkill(cmd, work, base, direct):
     check(code == 0, "the good run failed (%d): %s" % (code, err[-300:]))
     before = digest(work)
     p = start(cmd, work, plate_deck(work, base, 120))
-    killed = []
     if wait_rows(work, 3, p):
-        killed = ranks(p, direct)
-        for pid in killed:
-            os.kill(pid, signal.SIGKILL)
-    p.communicate(timeout=LIMIT)
-    gone(killed)
+        kill_every_rank(p, direct, LIMIT)
+    else:
+        p.communicate(timeout=LIMIT)
     untouched(work, before)
     check(status(work).startswith("running (pid"), "rel.status: %r" % status(work))
     check(os.path.exists(os.path.join(work, "rel.csv.part")), "no rel.csv.part of the killed run")

@@ -19,11 +19,13 @@ output file touched.  DECK writes rs.{csv,e} and rs.restart (Output Filename rs,
 """
 import os
 import re
-import signal
 import subprocess
 import sys
 import tempfile
 import time
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+from process_kill import kill_every_rank  # noqa: E402
 
 LIMIT = 240  # seconds for any one run; ctest's TIMEOUT is larger
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -49,28 +51,6 @@ def reference(cmd, deck, work):
     return ref
 
 
-def ranks(p, direct):
-    """The periforge processes: the launched one (direct) or mpirun's children."""
-    if direct:
-        return [p.pid]
-    out = subprocess.run(["pgrep", "-P", str(p.pid)], capture_output=True, text=True).stdout.split()
-    return [int(x) for x in out]
-
-
-def gone(pids):
-    """Until the killed processes have died (a zombie counts as dead, as for the lock)."""
-    end = time.time() + LIMIT
-    for pid in pids:
-        while time.time() < end:
-            try:
-                state = open("/proc/%d/stat" % pid).read().rsplit(")", 1)[1].split()[0]
-            except (OSError, IndexError):
-                break
-            if state == "Z":
-                break
-            time.sleep(0.02)
-
-
 def killed_run(cmd, deck, work, direct):
     """Starts the run, SIGKILLs every rank as soon as its first checkpoint exists; returns the run directory."""
     run_dir = os.path.join(work, "run")
@@ -81,11 +61,7 @@ def killed_run(cmd, deck, work, direct):
     end = time.time() + LIMIT
     while time.time() < end and p.poll() is None and not os.path.exists(checkpoint):
         time.sleep(0.01)
-    pids = ranks(p, direct)
-    for pid in pids:
-        os.kill(pid, signal.SIGKILL)
-    p.communicate(timeout=LIMIT)
-    gone(pids)
+    kill_every_rank(p, direct, LIMIT)
     check(os.path.exists(checkpoint), "the killed run wrote no checkpoint")
     check(not os.path.exists(os.path.join(run_dir, "rs.csv")), "the run ended before it was killed")
     check(os.path.exists(os.path.join(run_dir, "rs.lock")), "the killed run left no stale lock to take over")
