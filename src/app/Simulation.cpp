@@ -127,8 +127,8 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
   std::unique_ptr<Checkpointer> checkpointer;  // or null: no Restart list; the fanout calls it after each step
   try {
     for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
-    for (const auto& m : output.managers)
-      if (from) m->resumeFrom(restart);
+    if (from)
+      for (const auto& m : output.managers) m->resumeFrom(restart);
     restart = CheckpointData();  // the copies of the output files are on disk again
     if (deck.restart.given)
       checkpointer = std::make_unique<Checkpointer>(deck, problem, output.managers, from ? from->count : 0);

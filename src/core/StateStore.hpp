@@ -35,7 +35,6 @@ class StateStore {
   void rollback();  // committed -> trial for every history field (a copy: trial is then valid)
   // A restart: the committed values of history field `name` (as many as it has entries), copied to trial too.
   void restoreCommitted(const std::string& name, const std::vector<double>& values);
-  std::size_t size(const std::string& name) const { return field(name).trial.size(); }
 
  private:
   struct Field {

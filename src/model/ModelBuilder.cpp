@@ -60,8 +60,8 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
 
 // A Text File mesh is 3D unless it is flat (every z = 0) and every block's material is 2D: then it is the
 // 2D discretization those materials need (the volumes in the file already hold the thickness).
-void adoptFlatTextMesh(PointCloud& cloud, const std::map<int, BlockSpec>& blocks) {
-  if (cloud.planar) return;
+void adoptFlatTextMesh(const DiscretizationSpec& spec, PointCloud& cloud, const std::map<int, BlockSpec>& blocks) {
+  if (spec.type != DiscretizationSpec::Type::TextFile || cloud.planar) return;
   for (int p = 0; p < cloud.size(); ++p)
     if (cloud.x[3 * p + 2] != 0.0) return;
   for (const auto& kv : blocks)
@@ -116,7 +116,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
                        " but no entry of Blocks names it");
     horizon[p] = it->second.horizon;
   }
-  adoptFlatTextMesh(pb.cloud, blocks);
+  adoptFlatTextMesh(deck.discretization, pb.cloud, blocks);
   for (const auto& kv : blocks) {
     const bool planarMaterial = isPlanar(kv.second.material->dimension());
     if (planarMaterial && !cloud.planar)
