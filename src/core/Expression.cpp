@@ -6,6 +6,7 @@
 
 #include "InputError.hpp"
 #include "RtcFunctions.hpp"
+#include "Words.hpp"
 
 namespace pf {
 
@@ -48,13 +49,6 @@ bool assignsValue(const std::string& s) {
   return false;
 }
 
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  while (!s.empty() && s.back() == ' ') s.pop_back();
-  return s;
-}
-
 }  // namespace
 
 Expression::Expression(const std::string& text, const std::string& context) : text_(text), context_(context) {
@@ -73,8 +67,11 @@ Expression::Expression(const std::string& text, const std::string& context) : te
   installCheckedRtcFunctions();
   fn_ = std::make_unique<PG_RuntimeCompiler::Function>(5, "pf_expression");
   for (const char* v : {"x", "y", "z", "t", "value"}) fn_->addVar("double", v);
-  if (!fn_->addBody(body))
-    throw InputError(context + ": cannot compile expression '" + oneLine(text) + "': " + oneLine(fn_->getErrors()));
+  bool compiled = false;
+  const std::string escape = compileRtcBody(*fn_, text, body, compiled);
+  if (!escape.empty() || !compiled)
+    throw InputError(context + ": cannot compile expression '" + oneLine(text) + "': " +
+                     (escape.empty() ? oneLine(fn_->getErrors()) : escape));
   // The compiler folds constant calls: sqrt(-1) written as such fails here, once, for every point.
   const std::string folded = takeRtcDomainError();
   if (!folded.empty()) throw InputError(context + ": expression '" + oneLine(text) + "': " + folded);

@@ -7,16 +7,11 @@
 
 #include "InputError.hpp"
 #include "RtcFunctions.hpp"
+#include "Words.hpp"
 
 namespace pf {
 
 namespace {
-
-std::string oneLine(std::string s) {
-  for (char& c : s)
-    if (c == '\n' || c == '\r') c = ' ';
-  return s;
-}
 
 // The compiled function's value at (zeta, horizon); a domain error is left for takeRtcDomainError().
 double userDefinedValue(const Influence& f, double zeta, double horizon) {
@@ -51,7 +46,11 @@ Influence influenceFromName(const std::string& name, const std::string& inputFil
   installCheckedRtcFunctions();
   f.function = std::make_shared<PG_RuntimeCompiler::Function>(3, "pf_influence");
   for (const char* v : {"zeta", "horizon", "value"}) f.function->addVar("double", v);
-  if (!f.function->addBody(body))
+  bool compiled = false;
+  const std::string escape = compileRtcBody(*f.function, name, body, compiled);
+  if (!escape.empty())
+    throw InputError(inputFile + "/Influence Function: cannot compile expression '" + oneLine(name) + "': " + escape);
+  if (!compiled)
     throw InputError(inputFile + ": 'Influence Function' = '" + oneLine(name) +
                      "' is not 'One', 'Parabolic Decay', 'Gaussian' nor an expression in zeta and horizon: " +
                      oneLine(f.function->getErrors()));

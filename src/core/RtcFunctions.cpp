@@ -1,11 +1,15 @@
 #include "RtcFunctions.hpp"
 
+#include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <limits>
 #include <mutex>
 
+#include <RTC_FunctionRTC.hh>
 #include <RTC_RegistrarRTC.hh>
 
 namespace pf {
@@ -73,6 +77,56 @@ std::string takeRtcDomainError() {
   std::string e;
   e.swap(domainError);
   return e;
+}
+
+std::string malformedRtcNumber(const std::string& s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c == '"' || c == '\'') {
+      const std::size_t close = s.find(static_cast<char>(c), i + 1);
+      i = close == std::string::npos ? s.size() : close + 1;
+    } else if (s.compare(i, 2, "/*") == 0 || s.compare(i, 2, "//") == 0) {
+      const std::size_t close = s[i + 1] == '*' ? s.find("*/", i + 2) : s.find('\n', i);
+      i = close == std::string::npos ? s.size() : close + 2;
+    } else if (std::isalpha(c) || c == '_') {
+      while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_')) ++i;
+    } else if (std::isdigit(c) || c == '.') {
+      std::size_t j = i, dots = 0, exps = 0, digits = 0;  // digits: of the mantissa
+      bool dotAfterExp = false;
+      for (; j < s.size(); ++j) {
+        const char d = s[j];
+        if (std::isdigit(static_cast<unsigned char>(d))) digits += exps == 0 ? 1 : 0;
+        else if (d == '.') dots++, dotAfterExp = dotAfterExp || exps > 0;
+        else if (d == 'e' || d == 'E') ++exps;
+        else if (!((d == '+' || d == '-') && (s[j - 1] == 'e' || s[j - 1] == 'E'))) break;
+      }
+      const std::string number = s.substr(i, j - i);
+      i = j;
+      if (dots > 1 || exps > 1 || dotAfterExp || digits == 0) return "'" + number + "' is not a number";
+      errno = 0;
+      const bool isInt = dots == 0 && exps == 0;
+      const double v = isInt ? static_cast<double>(std::strtoll(number.c_str(), nullptr, 10))
+                             : std::strtod(number.c_str(), nullptr);
+      if (errno == ERANGE || (isInt && v > 2147483647.0)) return "the number '" + number + "' is out of range";
+    } else {
+      ++i;
+    }
+  }
+  return "";
+}
+
+std::string compileRtcBody(PG_RuntimeCompiler::Function& fn, const std::string& text, const std::string& body,
+                           bool& compiled) {
+  compiled = false;
+  const std::string bad = malformedRtcNumber(text);
+  if (!bad.empty()) return bad;
+  try {
+    compiled = fn.addBody(body);
+  } catch (const std::exception& e) {  // a safety net: malformedRtcNumber names the escapes known so far
+    return e.what();
+  }
+  return "";
 }
 
 std::string refusedRtcFunction(const std::string& name) {

@@ -37,4 +37,11 @@ std::string printable(const std::string& s) {
   return out;
 }
 
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!s.empty() && s.back() == ' ') s.pop_back();
+  return s;
+}
+
 }  // namespace pf

@@ -13,4 +13,7 @@ std::vector<std::string> splitWords(const std::string& s);
 // cut short at a NUL nor garbled on the terminal. Tabs and line breaks are kept (an expression may span lines).
 std::string printable(const std::string& s);
 
+// Text for a one-line message: line breaks as blanks, trailing blanks dropped.
+std::string oneLine(std::string s);
+
 }  // namespace pf

@@ -146,9 +146,7 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
     c.nodeSet = v.text("Node Set");
     if (!nodeSets.count(c.nodeSet))
       fail(file, bpath, "'Node Set' = '" + c.nodeSet + "' is not defined in Boundary Conditions");
-    const std::string where = bpath + "/Value";
-    compileChecked([&] { c.value = std::make_shared<const Expression>(v.text("Value"), file + ": " + where); }, file,
-                   where, v.text("Value"));
+    c.value = std::make_shared<const Expression>(v.text("Value"), file + ": " + bpath + "/Value");
     out.push_back(c);
   }
   return out;

@@ -156,8 +156,7 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
                                       : DiscretizationSpec::Type::RectangleWithHoles;
     parseGenerator(d, v, s, file);
   }
-  compileChecked([&] { s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path); }, file,
-                 path + "/Influence Function", v.text("Influence Function"));
+  s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path);
   s.partialVolume = v.flag("Partial Volume");
   if (s.partialVolume && s.type == DiscretizationSpec::Type::TextFile)
     fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "

@@ -1,11 +1,7 @@
 #include "ListReader.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
-#include <cstdlib>
 #include <sstream>
-#include <stdexcept>
 
 #include "core/InputError.hpp"
 
@@ -151,67 +147,6 @@ ParamTree treeOf(const PL& l, const std::string& file, const std::string& path) 
     t.entries.push_back(std::move(x));
   }
   return t;
-}
-
-namespace {
-
-// The first number of an expression that Pamgen's RTCompiler cannot read, with why, or "" when none. Its
-// tokenizer takes digits, '.', e/E and a sign after the exponent as one number and then asserts (SIGABRT)
-// on one that is neither an int nor a double ("1.0.0", "1ee5"), or lets std::stod/std::stoi throw for one
-// beyond their range ("1e400", "1e-400", "99999999999"). Quoted text and comments hold no numbers.
-std::string badNumber(const std::string& s) {
-  std::size_t i = 0;
-  while (i < s.size()) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c == '"' || c == '\'') {
-      const std::size_t close = s.find(static_cast<char>(c), i + 1);
-      i = close == std::string::npos ? s.size() : close + 1;
-    } else if (s.compare(i, 2, "/*") == 0 || s.compare(i, 2, "//") == 0) {
-      const std::size_t close = s[i + 1] == '*' ? s.find("*/", i + 2) : s.find('\n', i);
-      i = close == std::string::npos ? s.size() : close + 2;
-    } else if (std::isalpha(c) || c == '_') {
-      while (i < s.size() && (std::isalnum(static_cast<unsigned char>(s[i])) || s[i] == '_')) ++i;
-    } else if (std::isdigit(c) || c == '.') {
-      std::size_t j = i, dots = 0, exps = 0, digits = 0;  // digits: of the mantissa
-      bool dotAfterExp = false;
-      for (; j < s.size(); ++j) {
-        const char d = s[j];
-        if (std::isdigit(static_cast<unsigned char>(d))) digits += exps == 0 ? 1 : 0;
-        else if (d == '.') dots++, dotAfterExp = dotAfterExp || exps > 0;
-        else if (d == 'e' || d == 'E') ++exps;
-        else if (!((d == '+' || d == '-') && (s[j - 1] == 'e' || s[j - 1] == 'E'))) break;
-      }
-      const std::string number = s.substr(i, j - i);
-      i = j;
-      if (dots > 1 || exps > 1 || dotAfterExp || digits == 0) return "'" + number + "' is not a number";
-      errno = 0;
-      const bool isInt = dots == 0 && exps == 0;
-      const double v = isInt ? static_cast<double>(std::strtoll(number.c_str(), nullptr, 10))
-                             : std::strtod(number.c_str(), nullptr);
-      if (errno == ERANGE || (isInt && v > 2147483647.0)) return "the number '" + number + "' is out of range";
-    } else {
-      ++i;
-    }
-  }
-  return "";
-}
-
-}  // namespace
-
-void compileChecked(const std::function<void()>& make, const std::string& file, const std::string& path,
-                    const std::string& text) {
-  std::string shown = text;
-  for (char& c : shown)
-    if (c == '\n' || c == '\r') c = ' ';
-  const std::string bad = badNumber(text);
-  if (!bad.empty()) fail(file, path, "cannot compile expression '" + shown + "': " + bad);
-  try {
-    make();
-  } catch (const InputError&) {
-    throw;
-  } catch (const std::exception& e) {  // a safety net: badNumber names the escapes known so far
-    fail(file, path, "cannot compile expression '" + shown + "': " + e.what());
-  }
 }
 
 double getNumber(const PL& l, const std::string& name) {

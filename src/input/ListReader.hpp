@@ -2,7 +2,6 @@
 // Reading one Teuchos parameter list against declared ParameterSpecs: unknown entries, wrong types,
 // missing required ones, out-of-range values and unknown choices are InputErrors "file: path: message".
 // Internal to src/input (the only layer that sees Teuchos).
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -26,13 +25,6 @@ ParameterValues readList(const PL& l, const std::vector<ParameterSpec>& specs, c
 // The same checks without the values (for lists whose values the caller reads itself).
 void checkList(const PL& l, const std::vector<ParameterSpec>& specs, const std::vector<std::string>& sublists,
                const std::string& file, const std::string& path);
-
-// Runs make(), the compilation of an expression (a condition's Value, an Influence Function) by Pamgen's
-// RTCompiler, which reads numbers with std::stod and lets its std::out_of_range escape for a literal beyond
-// the double range (1e400, 1e-400): the run would end as "error: stod", naming nothing. Any such escape
-// becomes an InputError naming the parameter (path) and its text.
-void compileChecked(const std::function<void()>& make, const std::string& file, const std::string& path,
-                    const std::string& text);
 
 const PL& requireSublist(const PL& l, const std::string& name, const std::string& file, const std::string& path);
 
