@@ -11,7 +11,7 @@ namespace {
 using S = ParameterSpec;
 
 std::vector<ParameterSpec> commonSpecs() {
-  return {S::real("Relative Tolerance", "residual / load scale (reaction + body force) that ends a step")
+  return {S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step")
               .byDefault("1e-10").positive(),
           S::real("Absolute Tolerance", "residual force-density norm that ends a step; given alone (without "
                                         "`Relative Tolerance`) it is the only test").positive(),

@@ -146,14 +146,15 @@ class TangentOperator : public Epetra_Operator, public NOX::Epetra::Interface::J
 };
 
 // Converged when the force residual on free dofs is below the relative tolerance times the load scale
-// (the same test ADR uses) or the force-density residual is below the absolute tolerance.
+// (loadScale, the same test ADR uses) or the force-density residual is below the absolute tolerance.
 class ForceResidualTest : public NOX::StatusTest::Generic {
  public:
-  ForceResidualTest(const StepProblem& p, double rel, double abs) : problem_(p), rel_(rel), abs_(abs) {}
+  ForceResidualTest(const StepProblem& p, double rel, double abs, double loadFloor)
+      : problem_(p), rel_(rel), abs_(abs), floor_(loadFloor) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
     if (!solver.getSolutionGroup().isF()) return status_ = NOX::StatusTest::Unevaluated;
     last_ = problem_.norms();
-    tol_ = rel_ * last_.load;
+    tol_ = rel_ * loadScale(last_, floor_);
     const bool ok = last_.residual <= tol_ || (abs_ > 0 && last_.residualDensity <= abs_) || last_.residual == 0.0;
     return status_ = ok ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
   }
@@ -167,7 +168,7 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
   // The factor by which the residual r must still fall to pass (either criterion), 0 if unknown.
   double reductionNeeded(const ResidualNorms& r) const {
     double need = 0;
-    if (r.residual > 0) need = std::max(need, rel_ * r.load / r.residual);
+    if (r.residual > 0) need = std::max(need, rel_ * loadScale(r, floor_) / r.residual);
     if (abs_ > 0 && r.residualDensity > 0) need = std::max(need, abs_ / r.residualDensity);
     return need;
   }
@@ -176,7 +177,7 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
 
  private:
   const StepProblem& problem_;
-  double rel_, abs_, tol_ = 0;
+  double rel_, abs_, floor_, tol_ = 0;
   ResidualNorms last_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
@@ -242,7 +243,8 @@ NoxQuasiStaticSolver::NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)), l
 
 NoxQuasiStaticSolver::~NoxQuasiStaticSolver() = default;
 
-NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::vector<double>& u, double t) {
+NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::vector<double>& u, double t,
+                                                           double loadFloor) {
   const int n = model.numDofs();
   Linear& lin = *linear_;
   if (lin.M.is_null()) {  // the pair stiffness depends on the reference configuration only: build it once
@@ -286,7 +288,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
   auto linSys = Teuchos::rcp(new NOX::Epetra::LinearSystemAztecOO(print, ls, tangent, tangent, problem, M, noxX0));
   auto group = Teuchos::rcp(new NOX::Epetra::Group(print, problem, noxX0, linSys));
 
-  auto force = Teuchos::rcp(new ForceResidualTest(*problem, opt_.relativeTolerance, opt_.absoluteTolerance));
+  auto force = Teuchos::rcp(new ForceResidualTest(*problem, opt_.relativeTolerance, opt_.absoluteTolerance, loadFloor));
   auto combo = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   combo->addStatusTest(force);
   combo->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(opt_.maxIterations)));
@@ -317,16 +319,17 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::newton(Model& model, std::ve
   out.converged = status == NOX::StatusTest::Converged && force->getStatus() == NOX::StatusTest::Converged;
   out.residual = force->last().residual;
   out.tolerance = force->tolerance();
+  out.load = force->last().load;
   return out;
 }
 
 NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::vector<double>& u,
                                                             std::vector<double>& duPrev, double tA, double tB,
-                                                            int depth) {
+                                                            int depth, double loadFloor) {
   const bool root = model.layout().rank() == 0;
   const std::vector<double> uA(u);
   predictStep(model, tB, u, duPrev);
-  Outcome o = newton(model, u, tB);
+  Outcome o = newton(model, u, tB, loadFloor);
   if (o.converged) {
     std::vector<double> f(model.numDofs());
     model.internalForce(u.data(), f.data());  // the last residual may have been a perturbed one
@@ -342,8 +345,8 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
     const double tm = 0.5 * (tA + tB);
     std::vector<double> half(duPrev);
     for (double& d : half) d *= 0.5;
-    Outcome a = advance(model, u, half, tA, tm, depth + 1);
-    Outcome b = advance(model, u, half, tm, tB, depth + 1);
+    Outcome a = advance(model, u, half, tA, tm, depth + 1, loadFloor);
+    Outcome b = advance(model, u, half, tm, tB, depth + 1, std::max(loadFloor, a.load));
     for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
     b.iterations += a.iterations;
     b.linearIterations += a.linearIterations;
@@ -353,12 +356,12 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
                         tB, depth);
   predictStep(model, tB, u, duPrev);
   AdrSolver adr(opt_.fallback);
-  const AdrSolver::StepResult r = adr.relax(model, u, tB, uA, step_);  // throws SolverFailure if it fails too
+  const AdrSolver::StepResult r = adr.relax(model, u, tB, uA, step_, loadFloor);  // throws SolverFailure if it fails too
   std::vector<double> f(model.numDofs());
   model.internalForce(u.data(), f.data());
   model.commit();
   for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
-  return Outcome{true, r.iterations, 0, r.residual, r.tolerance};
+  return Outcome{true, r.iterations, 0, r.residual, r.tolerance, r.load};
 }
 
 void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
@@ -366,10 +369,10 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
   const SolverResume* resume = takeResume();
   step_ = resume ? resume->step : 0;
   runLoadSteps(model, u, v, times, observer,
-               [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB) {
+               [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, double loadFloor) {
                  ++step_;
-                 const Outcome o = advance(model, u, duPrev, tA, tB, 0);
-                 return StepStats{o.iterations, o.linearIterations, o.residual, o.tolerance};
+                 const Outcome o = advance(model, u, duPrev, tA, tB, 0, loadFloor);
+                 return StepStats{o.iterations, o.linearIterations, o.residual, o.tolerance, o.load};
                },
                resume);
 }

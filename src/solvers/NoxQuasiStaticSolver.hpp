@@ -42,11 +42,12 @@ class NoxQuasiStaticSolver : public Solver {
   struct Outcome {
     bool converged = false;
     int iterations = 0, linearIterations = 0;
-    double residual = 0, tolerance = 0;
+    double residual = 0, tolerance = 0, load = 0;
   };
-  Outcome newton(Model& model, std::vector<double>& u, double t);
+  Outcome newton(Model& model, std::vector<double>& u, double t, double loadFloor);
   // Solves [tA, tB] from the converged u at tA, cutting or falling back as needed; commits its end.
-  Outcome advance(Model& model, std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, int depth);
+  Outcome advance(Model& model, std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, int depth,
+                  double loadFloor);
 
   NoxOptions opt_;
   long step_ = 0;  // the load step being solved, for messages
