@@ -1,0 +1,12 @@
+# Elastic Correspondence bar in uniaxial tension, 3D, ADR, np = 1 and 2: reaction, interior strain and stress
+# against E eps (check_correspondence_bar.py states the bounds), and the two runs against each other.
+foreach(np 1 2)
+  periforge_run(bar_3d_correspondence_np${np} ${REG}/correspondence/bar_3d_correspondence.xml ${np})
+  periforge_check(bar_3d_correspondence_np${np}_check bar_3d_correspondence_np${np}
+    ${PY} ${REG}/correspondence/check_correspondence_bar.py
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_np${np}/bar_3d_correspondence.csv)
+endforeach()
+periforge_check(bar_3d_correspondence_np1_vs_np2 "bar_3d_correspondence_np1;bar_3d_correspondence_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_np2/bar_3d_correspondence.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_np1/bar_3d_correspondence.e ${REG}/bar/np_agreement.comp)
