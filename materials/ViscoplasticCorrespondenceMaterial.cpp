@@ -29,9 +29,11 @@ MaterialEntry ViscoplasticCorrespondenceMaterial::entry() {
 }
 
 std::vector<StateSpec> ViscoplasticCorrespondenceMaterial::modelStateSpecs() const {
-  // Viscoplastic_Time starts as NaN: "never committed", the step then starts at FamilyView::startTime.
+  // Viscoplastic_Time starts as NaN: "never committed", the step then starts at FamilyView::startTime. The
+  // rate is history so that an evaluation without time passing (the output pass after a quasi-static
+  // step's commit) reports the rate of the step that led to the state instead of 0.
   return {{"Equivalent_Plastic_Strain", Location::Node, true, true},
-          {"Equivalent_Plastic_Strain_Rate", Location::Node, false, true},
+          {"Equivalent_Plastic_Strain_Rate", Location::Node, true, true},
           {"Viscoplastic_Time", Location::Node, true, false, std::numeric_limits<double>::quiet_NaN()}};
 }
 
@@ -40,6 +42,7 @@ void ViscoplasticCorrespondenceMaterial::updateStress(const FamilyView& fam, Sta
                                                       std::vector<Mat3>& tau) const {
   const double* epsN = state.committed("Equivalent_Plastic_Strain");
   const double* timeN = state.committed("Viscoplastic_Time");
+  const double* rateN = state.committed("Equivalent_Plastic_Strain_Rate");
   double* eps = state.trial("Equivalent_Plastic_Strain");
   double* rate = state.trial("Equivalent_Plastic_Strain_Rate");
   double* time = state.trial("Viscoplastic_Time");
@@ -47,7 +50,8 @@ void ViscoplasticCorrespondenceMaterial::updateStress(const FamilyView& fam, Sta
     const int i = fam.begin + static_cast<int>(k);
     const double dt = fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
     const FosterStep s = fosterUpdate(law_, moduli().bulk, moduli().shear, tauN[k], epsN[i], de[k], dt);
-    tau[k] = s.tau, eps[i] = s.epsP, rate[i] = s.rate, time[i] = fam.time;
+    tau[k] = s.tau, eps[i] = s.epsP, time[i] = fam.time;
+    rate[i] = dt > 0.0 ? s.rate : rateN[i];
   }
 }
 

@@ -10,3 +10,14 @@ periforge_check(bar_3d_correspondence_np1_vs_np2 "bar_3d_correspondence_np1;bar_
   ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
   ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_np2/bar_3d_correspondence.e
   ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_np1/bar_3d_correspondence.e ${REG}/bar/np_agreement.comp)
+
+# Viscoplastic Correspondence cube with every point prescribed (uniaxial strain at 1e3 1/s): the time reaches
+# the material only through the solver; the centre's and the corner's histories against an independent radial
+# return (check_vp_affine.py, 1e-8). Verlet (np 1 and 2) and ADR load steps.
+foreach(case vp_affine_verlet_np1 vp_affine_verlet_np2 vp_affine_adr_np1)
+  string(REGEX REPLACE "_np([0-9])$" "" deck ${case})
+  string(REGEX REPLACE "^.*_np" "" np ${case})
+  periforge_run(${case} ${REG}/correspondence/${deck}.xml ${np})
+  periforge_check(${case}_check ${case}
+    ${PY} ${REG}/correspondence/check_vp_affine.py ${CMAKE_CURRENT_BINARY_DIR}/regression/${case}/${deck}.csv)
+endforeach()
