@@ -21,3 +21,11 @@ foreach(case vp_affine_verlet_np1 vp_affine_verlet_np2 vp_affine_adr_np1)
   periforge_check(${case}_check ${case}
     ${PY} ${REG}/correspondence/check_vp_affine.py ${CMAKE_CURRENT_BINARY_DIR}/regression/${case}/${deck}.csv)
 endforeach()
+
+# Restart: the same cube under Verlet killed (SIGKILL) after its first checkpoint and restarted ends with the
+# uninterrupted run's rs.csv and rs.e byte for byte: the points' committed time (Viscoplastic_Time, node
+# history) comes back from the checkpoint, so the first step after the restart has the right dt.
+add_test(NAME restart_vp_affine_kill_np1_np1
+         COMMAND ${PY} ${REG}/restart/run_restart.py kill ${REG}/correspondence/vp_affine_restart.xml 1 1
+                 ${PERIFORGE_EXE} ${MPIRUN})
+set_tests_properties(restart_vp_affine_kill_np1_np1 PROPERTIES LABELS "regression" TIMEOUT 600)
