@@ -1,6 +1,6 @@
 // Unit tests of "Viscoplastic Correspondence" (materials/FosterViscoplasticity, ViscoplasticCorrespondenceMaterial)
 // with Foster et al. (2010)'s 6061-T6 constants, on an interior material point driven by an affine motion:
-//  1. uniaxial strain and pure shear at 1e2, 1e3, 1e4 1/s: von Mises stress, equivalent plastic strain and
+//  1. uniaxial strain and pure shear (3D and plane strain) at 1e2, 1e3, 1e4 1/s: von Mises stress, equivalent plastic strain and
 //     its rate at every step against a classical radial return of the same law written here in principal
 //     values (its own bisection solve, no src code), and the rate sensitivity it predicts;
 //  2. a 90 degree rotation superposed in one step during plastic flow changes no scalar output (1e-10);
@@ -21,12 +21,13 @@ using pf::Mat3;
 constexpr double kE = 68.9e9, kNu = 0.333, kY = 276e6, kN = 13.5, kM = 44.0, kEps0 = 1e-3, kRate0 = 1e3;
 const double kMu = kE / (2 * (1 + kNu)), kK = kE / (3 * (1 - 2 * kNu));
 
-std::unique_ptr<pf::Material> viscoplastic() {
-  return pf::makeMaterial("Viscoplastic Correspondence",
-                          {{"Density", 2700.0}, {"Young's Modulus", kE}, {"Poisson's Ratio", kNu},
-                           {"Hourglass Coefficient", 0.0}, {"Yield Stress", kY}, {"Strain Hardening Exponent", kN},
-                           {"Rate Sensitivity Exponent", kM}, {"Reference Plastic Strain", kEps0},
-                           {"Reference Plastic Strain Rate", kRate0}});
+std::unique_ptr<pf::Material> viscoplastic(bool planeStrain = false) {
+  std::map<std::string, double> v = {{"Density", 2700.0}, {"Young's Modulus", kE}, {"Poisson's Ratio", kNu},
+                                     {"Hourglass Coefficient", 0.0}, {"Yield Stress", kY}, {"Strain Hardening Exponent", kN},
+                                     {"Rate Sensitivity Exponent", kM}, {"Reference Plastic Strain", kEps0},
+                                     {"Reference Plastic Strain Rate", kRate0}};
+  if (planeStrain) v["Plane Strain"] = 1.0, v["Thickness"] = 1e-3;
+  return pf::makeMaterial("Viscoplastic Correspondence", v);
 }
 
 // The classical reference: principal deviatoric stresses s, pressure p, equivalent plastic strain ep under
@@ -65,15 +66,17 @@ std::array<double, 3> stretches(bool shear, double e) {
 //    increment (l_n+1 - l_n)/((l_n+1 + l_n)/2) per axis, hardening at the step's start, rate implicit), so
 //    they agree to the solves' tolerance and the round-off of F (1e-14 per step): bound 1e-9 relative.
 TEST(ViscoplasticCorrespondence, UniaxialStrainAndPureShearMatchRadialReturn) {
+  for (bool planar : {false, true})  // both paths keep z fixed: plane strain has the same reference
   for (bool shear : {false, true}) {
     double vmAt[3] = {0, 0, 0};
     for (int r = 0; r < 3; ++r) {
       const double rate = std::pow(10.0, 2 + r), eEnd = 0.05;
       const int steps = 200;
       const double dt = eEnd / rate / steps;
-      SCOPED_TRACE((shear ? "pure shear, rate " : "uniaxial strain, rate ") + std::to_string(rate));
-      auto mat = viscoplastic();
-      pf::MaterialPoint mp(*mat, 1e-3, 3.0);
+      SCOPED_TRACE(std::string(planar ? "plane strain, " : "3D, ") + (shear ? "pure shear, rate " : "uniaxial strain, rate ") +
+                   std::to_string(rate));
+      auto mat = viscoplastic(planar);
+      pf::MaterialPoint mp(*mat, 1e-3, 3.0, 1e-3);
       Reference ref;
       for (int k = 1; k <= steps; ++k) {
         const auto l0 = stretches(shear, rate * dt * (k - 1)), l1 = stretches(shear, rate * dt * k);
@@ -91,7 +94,8 @@ TEST(ViscoplasticCorrespondence, UniaxialStrainAndPureShearMatchRadialReturn) {
       }
       EXPECT_GT(ref.ep, 0.02);  // well into plastic flow
       vmAt[r] = ref.vm();
-      std::printf("  %s rate %.0e: von Mises %.4f MPa, eps_p %.5f\n", shear ? "shear" : "uniaxial", rate,
+      std::printf("  %s %s rate %.0e: von Mises %.4f MPa, eps_p %.5f\n", planar ? "plane strain" : "3D",
+                  shear ? "shear" : "uniaxial", rate,
                   ref.vm() / 1e6, ref.ep);
     }
     // Rate sensitivity: the flow stress grows with the rate. Once flowing, the plastic rate is about the
