@@ -27,18 +27,24 @@ std::string pointName(const FamilyView& fam, int i) {
 // ill-conditioned. det(K) / (tr K / d)^d is 1 for an isotropic family and 0 for a degenerate one.
 const double kMinShapeQuality = 1e-8;
 
-}  // namespace
-
-ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar) {
+// K and N = sum w Y (x) xi of owned node i, with the number of bonds and det K / (tr K / d)^d.
+struct FamilySums {
   Mat3 K{}, N{};
+  int bonds = 0;
+  double quality = 0.0;
+};
+
+FamilySums familySums(const FamilyView& fam, int i, const double* y, bool planar) {
+  FamilySums s;
+  Mat3& K = s.K;
+  Mat3& N = s.N;
   const double* xi0 = fam.x + 3 * i;
   const double* yi = y + 3 * i;
-  int bonds = 0;
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
     const int j = fam.neighbors[b];
     const double w = bondWeight(fam, b);
     if (w == 0.0) continue;
-    ++bonds;
+    ++s.bonds;
     const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
     const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
     for (int a = 0; a < 3; ++a)
@@ -47,26 +53,41 @@ ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y,
         N[3 * a + c] += w * Y[a] * xi[c];
       }
   }
-  ShapeAndGradient out;
-  double quality = 0.0;
-  if (planar) {  // the 2x2 in-plane block; z stays the identity
+  if (planar) {
     const double d2 = K[0] * K[4] - K[1] * K[3], t2 = 0.5 * (K[0] + K[4]);
-    quality = t2 > 0 ? d2 / (t2 * t2) : 0.0;
-    if (quality > kMinShapeQuality)
-      out.Kinv = {K[4] / d2, -K[1] / d2, 0, -K[3] / d2, K[0] / d2, 0, 0, 0, 0};
+    s.quality = t2 > 0 ? d2 / (t2 * t2) : 0.0;
   } else {
     const double t3 = trace(K) / 3.0;
-    quality = t3 > 0 ? det(K) / (t3 * t3 * t3) : 0.0;
-    if (quality > kMinShapeQuality) inverse(K, out.Kinv);
+    s.quality = t3 > 0 ? det(K) / (t3 * t3 * t3) : 0.0;
   }
-  if (!(quality > kMinShapeQuality))
-    throw InputError("correspondence model: the shape tensor K of " + pointName(fam, i) + " is singular (" +
-                     std::to_string(bonds) + " bonds; det K / (tr K / d)^d = " + std::to_string(quality) +
-                     "): its family needs " + (planar ? "two non-parallel bonds" : "three non-coplanar bonds") +
-                     "; is the horizon too small for the grid?");
-  out.F = mul(N, out.Kinv);
+  return s;
+}
+
+}  // namespace
+
+bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out) {
+  const FamilySums s = familySums(fam, i, y, planar);
+  if (!(s.quality > kMinShapeQuality)) return false;
+  const Mat3& K = s.K;
+  if (planar) {  // the 2x2 in-plane block; z stays the identity
+    const double d2 = K[0] * K[4] - K[1] * K[3];
+    out.Kinv = {K[4] / d2, -K[1] / d2, 0, -K[3] / d2, K[0] / d2, 0, 0, 0, 0};
+  } else {
+    inverse(K, out.Kinv);
+  }
+  out.F = mul(s.N, out.Kinv);
   if (planar) out.F[2] = out.F[5] = out.F[6] = out.F[7] = 0.0, out.F[8] = 1.0;
-  return out;
+  return true;
+}
+
+ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar) {
+  ShapeAndGradient out;
+  if (tryShapeAndGradient(fam, i, y, planar, out)) return out;
+  const FamilySums s = familySums(fam, i, y, planar);
+  throw InputError("correspondence model: the shape tensor K of " + pointName(fam, i) + " is singular (" +
+                   std::to_string(s.bonds) + " bonds; det K / (tr K / d)^d = " + std::to_string(s.quality) +
+                   "): its family needs " + (planar ? "two non-parallel bonds" : "three non-coplanar bonds") +
+                   "; is the horizon too small for the grid?");
 }
 
 PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {

@@ -17,6 +17,8 @@ struct ShapeAndGradient {
 // partial-volume fraction). planar: the family lies in z = 0. Throws InputError naming the point when K is
 // singular or ill-conditioned (fewer than three non-coplanar bonds, two non-parallel ones in 2D).
 ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar);
+// The same without the throw: false when K is singular (out is then unset).
+bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out);
 
 // One step of the Flanagan & Taylor (1987) polar update from F_n to F: the increment L dt = (F - F_n) F_mid^-1
 // (F_mid = (F_n + F)/2), D dt = sym, W dt = skew; the spin of the rotation Omega = W + (tr V I - V)^-1 z

@@ -149,7 +149,11 @@ void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound
   const double C = std::max(3.0 * moduli_.bulk, 2.0 * moduli_.shear);
   const double c = hourglassConstant(fam.horizon);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const Mat3 Kinv = shapeAndGradient(fam, i, fam.x, isPlanar(dim_)).Kinv;
+    // A singular K is reported by the first force evaluation, which fails on every rank together (this
+    // runs while the model is built, where a throw on one rank would leave the others in a collective).
+    ShapeAndGradient sg;
+    const bool regular = tryShapeAndGradient(fam, i, fam.x, isPlanar(dim_), sg);
+    const Mat3 Kinv = regular ? sg.Kinv : Mat3{};
     double a = 0.0, h = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       const int j = fam.neighbors[b];

@@ -290,8 +290,11 @@ TEST(ElasticCorrespondence, StiffnessEstimateAgainstJacobianRows) {
     }
     std::printf("  row sum / estimate: max %.3f over the body, %.3f at the centre\n", worst, worstInterior);
     EXPECT_LT(worst, 1.0);
-    for (int k = 0; k < n; ++k)
-      if (!(planar && k % 3 == 2)) EXPECT_LT(diag[k], 0.0) << "dof " << k;
+    for (int k = 0; k < n; ++k) {
+      if (!(planar && k % 3 == 2)) {
+        EXPECT_LT(diag[k], 0.0) << "dof " << k;
+      }
+    }
   }
 }
 
