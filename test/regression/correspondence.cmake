@@ -29,3 +29,14 @@ add_test(NAME restart_vp_affine_kill_np1_np1
          COMMAND ${PY} ${REG}/restart/run_restart.py kill ${REG}/correspondence/vp_affine_restart.xml 1 1
                  ${PERIFORGE_EXE} ${MPIRUN})
 set_tests_properties(restart_vp_affine_kill_np1_np1 PROPERTIES LABELS "regression" TIMEOUT 600)
+
+# A singular shape tensor (a 3D model on one layer of points): one 'input error' line naming a point, at np 1
+# and 2, within the timeout (no rank left waiting).
+foreach(np 1 2)
+  set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/correspondence_singular_shape_np${np})
+  file(MAKE_DIRECTORY ${wd})
+  add_test(NAME correspondence_singular_shape_np${np}
+           COMMAND ${MPIRUN} -np ${np} ${PERIFORGE_EXE} ${REG}/correspondence/singular_shape.xml WORKING_DIRECTORY ${wd})
+  set_tests_properties(correspondence_singular_shape_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 60
+    PASS_REGULAR_EXPRESSION "input error: correspondence model: the shape tensor K of the point at \\([^)]*\\) is singular")
+endforeach()
