@@ -53,11 +53,17 @@ void Model::internalForce(const double* u, double* f) {
   // rank before the collective exportAdd, or the others wait in it forever: one allreduce per evaluation.
   collectively(layout_->comm(), [&] {
     for (const BlockModel& b : blocks_) {
-      FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
-      b.material->computeForce(view, yOverlap_.data(), state_, fOverlap_.data());
+      b.material->computeForce(blockView(b), yOverlap_.data(), state_, fOverlap_.data());
     }
   });
   layout_->exportAdd(fOverlap_.data(), f, 3);
+}
+
+FamilyView Model::blockView(const BlockModel& b) const {
+  FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+  view.time = time_;
+  view.startTime = startTime_;
+  return view;
 }
 
 std::vector<double> Model::pairStiffness() const {
@@ -81,7 +87,7 @@ bool Model::forceDerivative(const double* u, const double* du, double* df) {
   layout_->importToOverlap(du, duOverlap_.data(), 3);
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
   for (const BlockModel& b : blocks_) {
-    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+    const FamilyView view = blockView(b);
     if (!b.material->forceDerivative(view, yOverlap_.data(), duOverlap_.data(), state_, fOverlap_.data())) return false;
   }
   layout_->exportAdd(fOverlap_.data(), df, 3);
@@ -115,6 +121,8 @@ void evaluate(const NodalLoad& load, const std::vector<double>& x, double t, App
 }  // namespace
 
 void Model::applyPrescribed(double t, double* u) const {
+  if (!clockStarted_) startTime_ = t, clockStarted_ = true;
+  time_ = t;
   for (const NodalLoad& l : prescribedLoads_) evaluate(l, x_, t, [u](int k, double v) { u[k] = v; });
 }
 
