@@ -1,0 +1,38 @@
+# The Implicit solver (Newmark-beta, Newton-Krylov per step; docs/solvers.md "Implicit").
+# Peridigm's CompressionImplicit_2x1x1 against its gold file within its .comp tolerances, np = 1 and 2 (as
+# peridigm.cmake registers Peridigm's other decks).
+set(PERIDIGM_REF ${PERIFORGE_SHARED_DIR}/reference/peridigm)
+foreach(np 1 2)
+  set(deck CompressionImplicit_2x1x1)
+  periforge_run(peridigm_${deck}_np${np} ${PERIDIGM_REF}/${deck}/${deck}.xml ${np})
+  periforge_check(peridigm_${deck}_np${np}_vs_gold peridigm_${deck}_np${np}
+    ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_${deck}_np${np}/${deck}.e
+    ${PERIDIGM_REF}/${deck}/${deck}_gold.e ${PERIDIGM_REF}/${deck}/${deck}.comp)
+endforeach()
+
+# Independent references (check_newmark.py states the bounds): the two-point oscillator against the closed
+# form of the trapezoidal rule (displacement, velocity, acceleration, period elongation, energy) at
+# omega dt = 0.245 and at 6.1 (three times Verlet's limit); the free line bar's energy at np = 1 and 2.
+set(IMP ${REG}/implicit)
+set(implicit_cases "sdof_newmark sdof 2.0e-5 1.0e-12" "sdof_newmark_large_dt sdof 5.0e-4 1.0e-10"
+                   "bar_line_newmark bar 5.0e-4 1.0e-9")
+foreach(case ${implicit_cases})
+  separate_arguments(c UNIX_COMMAND "${case}")
+  list(GET c 0 deck)
+  list(GET c 1 kind)
+  list(GET c 2 dt)
+  list(GET c 3 tol)
+  set(nps 1)
+  if(kind STREQUAL "bar")
+    set(nps 1 2)
+  endif()
+  foreach(np ${nps})
+    periforge_run(implicit_${deck}_np${np} ${IMP}/${deck}.xml ${np})
+    periforge_check(implicit_${deck}_np${np}_check implicit_${deck}_np${np}
+      ${PY} ${IMP}/check_newmark.py ${kind} ${CMAKE_CURRENT_BINARY_DIR}/regression/implicit_${deck}_np${np}/${deck}.e ${dt} ${tol})
+  endforeach()
+endforeach()
+
+# Bad Implicit input: one line naming the file and the parameter.
+add_test(NAME implicit_input_errors COMMAND ${PY} ${IMP}/run_implicit_errors.py ${PERIFORGE_EXE} ${REG}/bar/bar_3d.xml)
+set_tests_properties(implicit_input_errors PROPERTIES LABELS "regression")

@@ -1,0 +1,101 @@
+#!/usr/bin/env python3
+"""Checks Implicit (Newmark beta = 1/4, gamma = 1/2) runs against independent references.
+
+  check_newmark.py sdof RUN.e DT TOL   the two-point oscillator (sdof_newmark*.xml)
+  check_newmark.py bar RUN.e DT TOL    the free line bar (bar_line_newmark.xml): energy only
+
+sdof: two points 2 apart along x, one bond (horizon 2, influence 1, V = 2 each), thrown together at v0 = 1.
+By hand from the OSB elastic force state (t = 3 K theta / m x + 15 mu / m e^d, m = |xi|^2 V = 8,
+theta = 3 / m |xi| e V = 1.5 e, e^d = e - theta |xi| / 3 = 0), each end's force density is -9 K d for an
+end displacement d (e = -2 d), exactly linear since bond and motion are collinear: rho d'' = -9 K d,
+omega^2 = 9 K / rho. The trapezoidal rule maps (omega d, v) by a rotation of theta = 2 atan(omega dt / 2)
+(the Cayley transform of the exact rotation), so the run must give d_n = v0 / omega sin(n theta),
+v_n = v0 cos(n theta), a_n = -omega^2 d_n: period T dt omega / theta, Newmark's elongation.
+Both (sdof, bar): total energy sum(rho V v^2 / 2) + sum(Stored_Elastic_Energy) conserved.
+
+Bounds, from the Newton test alone (no fitting): a step converges with |beta dt^2 (rho a - f)|_2 <= TOL,
+i.e. it solves the step exactly for a force perturbed by r with |r|_2 <= TOL / (beta dt^2). That moves u by
+at most TOL / rho, and v by gamma dt / (beta dt^2) = 2 / dt times that; the step map is a rotation in
+(omega d, v), so the errors of N steps add: |d error| <= N TOL / rho sqrt(1 + 4 / (omega dt)^2),
+|v error| <= N TOL / rho sqrt(omega^2 + 4 / dt^2). The energy changes by at most the work of r over the
+step, |r V|_2 |u_n+1 - u_n|_2, summed. Each bound gets 1e-12 of the scale for rounding (a few hundred
+ulps over the run).
+"""
+import math
+import sys
+
+import netCDF4
+import numpy as np
+
+sys.path.insert(0, __import__("os").path.join(__import__("os").path.dirname(__file__), "..", "compat"))
+from exodus_fields import element, nodal  # noqa: E402
+
+K, RHO, V0, BETA, GAMMA = 130.0e9, 7800.0, 1.0, 0.25, 0.5
+ROUND = 1e-12
+
+
+def report(name, err, bound):
+    ok = err <= bound
+    print("%-34s %.3e  (bound %.3e)  %s" % (name, err, bound, "ok" if ok else "FAIL"))
+    return ok
+
+
+def energy_check(d, dt, tol):
+    vol = element(d, "Volume")[0]
+    u = nodal(d, "DisplacementX")
+    v = nodal(d, "VelocityX")
+    w = element(d, "Stored_Elastic_Energy")
+    energy = 0.5 * RHO * (vol[None, :] * v * v).sum(axis=1) + w.sum(axis=1)
+    du = np.linalg.norm(np.diff(u, axis=0), axis=1)
+    work = np.concatenate([[0.0], np.cumsum(tol / (BETA * dt * dt) * vol.max() * du)])
+    drift = np.abs(energy - energy[0])
+    print("energy: E0 = %.6e J, max |E - E0| / E0 = %.3e over %d steps" % (energy[0], drift.max() / energy[0],
+                                                                             len(energy) - 1))
+    # work is non-decreasing: its last value bounds every step's drift.
+    return report("max |E_n - E_0| [J]", drift.max(), work[-1] + ROUND * energy[0])
+
+
+def sdof(d, dt, tol):
+    omega = math.sqrt(9.0 * K / RHO)
+    theta = 2.0 * math.atan(0.5 * omega * dt)
+    x = np.asarray(d["coordx"][:])
+    left = int(np.argmin(x))
+    t = np.asarray(d["time_whole"][:])
+    n = np.rint(t / dt)
+    ok = report("times are n dt", np.abs(t - n * dt).max(), 1e-12 * t.max())
+    ux, vx, ax = nodal(d, "DisplacementX"), nodal(d, "VelocityX"), nodal(d, "AccelerationX")
+    amp = V0 / omega
+    steps = len(t) - 1
+    du = steps * tol / RHO * math.sqrt(1.0 + 4.0 / (omega * dt) ** 2)
+    dv = steps * tol / RHO * math.sqrt(omega ** 2 + 4.0 / dt ** 2)
+    ok &= report("d_n vs v0/omega sin(n theta) [m]", np.abs(ux[:, left] - amp * np.sin(n * theta)).max(),
+                 du + ROUND * amp)
+    ok &= report("v_n vs v0 cos(n theta) [m/s]", np.abs(vx[:, left] - V0 * np.cos(n * theta)).max(), dv + ROUND * V0)
+    # a = (f + b) / rho: exact within the residual force |r| / rho beyond the displacement error.
+    ok &= report("a_n vs -omega^2 d_n [m/s^2]", np.abs(ax[:, left] + omega ** 2 * amp * np.sin(n * theta)).max(),
+                 omega ** 2 * du + tol / (BETA * dt * dt) / RHO + ROUND * omega * V0)
+    ok &= report("ends move symmetrically [m]", np.abs(ux.sum(axis=1)).max(), du + ROUND * amp)
+    # The discrete period from the run alone: d_n+1 + d_n-1 = 2 cos(theta) d_n, fitted by least squares.
+    dn = ux[:, left]
+    c = (dn[1:-1] * (dn[2:] + dn[:-2])).sum() / (2.0 * (dn[1:-1] ** 2).sum())
+    elongation = omega * dt / math.acos(c)
+    expected = omega * dt / theta
+    print("omega dt = %.4f: period / (2 pi / omega) = %.8f, Newmark's omega dt / (2 atan(omega dt / 2)) = %.8f"
+          % (omega * dt, elongation, expected))
+    # The fitted phase inherits the displacement error relative to the amplitude.
+    ok &= report("period elongation vs formula", abs(elongation - expected) / expected, 10 * (du / amp + ROUND))
+    return ok & energy_check(d, dt, tol)
+
+
+def main():
+    if len(sys.argv) != 5 or sys.argv[1] not in ("sdof", "bar"):
+        sys.exit(__doc__)
+    d = netCDF4.Dataset(sys.argv[2])
+    dt, tol = float(sys.argv[3]), float(sys.argv[4])
+    ok = sdof(d, dt, tol) if sys.argv[1] == "sdof" else energy_check(d, dt, tol)
+    print("PASS" if ok else "FAIL")
+    sys.exit(0 if ok else 1)
+
+
+if __name__ == "__main__":
+    main()
