@@ -17,18 +17,18 @@ SolverEntry ImplicitSolver::entry() {
   e.name = "Implicit";
   e.doc = "Peridigm's implicit dynamics: Newmark-beta with a fixed time step, Newton-Krylov per step";
   e.dynamic = true;
-  ParameterSpec beta = S::real("Beta", "Newmark's beta; 1/4 (with `Gamma` 1/2): the trapezoidal rule, unconditionally "
-                                       "stable; below `Gamma`/2 only conditionally stable (a warning)")
+  ParameterSpec beta = S::real("Beta", "Newmark's β; ¼ (with `Gamma` ½): the trapezoidal rule, unconditionally stable; "
+                                       "below `Gamma`/2 only conditionally stable (a warning)")
                            .byDefault("0.25").positive();
   beta.max = 0.5;  // beyond 1/2 the scheme is no longer second order nor Peridigm's; (0, 1/2]
   e.parameters = {
-      S::real("Fixed dt", "time step; the run takes floor((Final Time - Initial Time) / dt) steps, as Peridigm")
+      S::real("Fixed dt", "time step; the run takes floor((Final Time − Initial Time) / dt) steps, as Peridigm")
           .need().positive(),
       beta,
-      S::real("Gamma", "Newmark's gamma; 1/2: no numerical damping, above: damping (first order); below 1/2 the "
+      S::real("Gamma", "Newmark's γ; ½: no numerical damping; above: damping (first order); below ½ the "
                        "scheme amplifies and is refused").byDefault("0.5").atLeast(0.5),
-      S::real("Absolute Tolerance", "a step converges when beta dt^2 |rho a - f - b| (2-norm over free dofs, "
-                                    "Peridigm's residual, kg/m^2) is at most this").byDefault("1e-6").positive(),
+      S::real("Absolute Tolerance", "a step converges when β dt² ‖ρa − f − b‖₂ over the free dofs (Peridigm's "
+                                    "residual, kg/m²) is at most this").byDefault("1e-6").positive(),
       S::integer("Maximum Solver Iterations", "Newton iterations per time step; a step still above the "
                                               "tolerance stops the run").byDefault("10").atLeast(1),
       S::flag("Verbose", "print NOX's residual history").byDefault("false")};

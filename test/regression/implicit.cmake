@@ -1,4 +1,4 @@
-# The Implicit solver (Newmark-beta, Newton-Krylov per step; docs/solvers.md "Implicit").
+# The Implicit solver (Newmark-beta, Newton-Krylov per step; docs/input.md, "Solver").
 # Peridigm's CompressionImplicit_2x1x1 against its gold file within its .comp tolerances, np = 1 and 2 (as
 # peridigm.cmake registers Peridigm's other decks).
 set(PERIDIGM_REF ${PERIFORGE_SHARED_DIR}/reference/peridigm)
@@ -36,3 +36,10 @@ endforeach()
 # Bad Implicit input: one line naming the file and the parameter.
 add_test(NAME implicit_input_errors COMMAND ${PY} ${IMP}/run_implicit_errors.py ${PERIFORGE_EXE} ${REG}/bar/bar_3d.xml)
 set_tests_properties(implicit_input_errors PROPERTIES LABELS "regression")
+
+# Restart (run_restart.py, as restart.cmake's Verlet and NOX cases): restart_implicit.xml killed after its first
+# checkpoint and restarted ends with the uninterrupted run's rs.csv and rs.e byte for byte (np 1): the
+# checkpoint carries the Newmark acceleration besides u, v and the material state.
+add_test(NAME restart_implicit_kill_np1_np1
+         COMMAND ${PY} ${REG}/restart/run_restart.py kill ${REG}/restart/restart_implicit.xml 1 1 ${PERIFORGE_EXE} ${MPIRUN})
+set_tests_properties(restart_implicit_kill_np1_np1 PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS 1)
