@@ -12,10 +12,12 @@ endforeach()
 
 # Independent references (check_newmark.py states the bounds): the two-point oscillator against the closed
 # form of the trapezoidal rule (displacement, velocity, acceleration, period elongation, energy) at
-# omega dt = 0.245 and at 6.1 (three times Verlet's limit); the free line bar's energy at np = 1 and 2.
+# omega dt = 0.245 and at 6.1 (three times Verlet's limit); the free line bar's energy at np = 1 and 2; the bar
+# driven rigidly by a time-dependent body force and a prescribed end against the rule's discrete trajectory
+# (both conditions evaluated at each step's end time).
 set(IMP ${REG}/implicit)
 set(implicit_cases "sdof_newmark sdof 2.0e-5 1.0e-12" "sdof_newmark_large_dt sdof 5.0e-4 1.0e-10"
-                   "bar_line_newmark bar 5.0e-4 1.0e-9")
+                   "bar_line_newmark bar 5.0e-4 1.0e-9" "rigid_bar_newmark rigid 1.0e-4 1.0e-10")
 foreach(case ${implicit_cases})
   separate_arguments(c UNIX_COMMAND "${case}")
   list(GET c 0 deck)

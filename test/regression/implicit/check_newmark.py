@@ -3,6 +3,7 @@
 
   check_newmark.py sdof RUN.e DT TOL   the two-point oscillator (sdof_newmark*.xml)
   check_newmark.py bar RUN.e DT TOL    the free line bar (bar_line_newmark.xml): energy only
+  check_newmark.py rigid RUN.e DT TOL  the rigidly driven line bar (rigid_bar_newmark.xml)
 
 sdof: two points 2 apart along x, one bond (horizon 2, influence 1, V = 2 each), thrown together at v0 = 1.
 By hand from the OSB elastic force state (t = 3 K theta / m x + 15 mu / m e^d, m = |xi|^2 V = 8,
@@ -12,6 +13,10 @@ omega^2 = 9 K / rho. The trapezoidal rule maps (omega d, v) by a rotation of the
 (the Cayley transform of the exact rotation), so the run must give d_n = v0 / omega sin(n theta),
 v_n = v0 cos(n theta), a_n = -omega^2 d_n: period T dt omega / theta, Newmark's elongation.
 Both (sdof, bar): total energy sum(rho V v^2 / 2) + sum(Stored_Elastic_Energy) conserved.
+rigid: body force rho (A + J t), one end prescribed to u = A t^2/2 + J t^3/6 + J t dt^2/12: the trapezoidal
+rule's exact discrete answer for that acceleration (exact for the quadratic part; for a = J t each step's
+displacement comes out J dt^3/12 above the cubic's). Every point must follow it, with v = A t + J t^2/2
+(exact: the rule integrates a linear acceleration exactly) and no internal force.
 
 Bounds, from the Newton test alone (no fitting): a step converges with |beta dt^2 (rho a - f)|_2 <= TOL,
 i.e. it solves the step exactly for a force perturbed by r with |r|_2 <= TOL / (beta dt^2). That moves u by
@@ -87,12 +92,36 @@ def sdof(d, dt, tol):
     return ok & energy_check(d, dt, tol)
 
 
+def rigid(d, dt, tol):
+    acc, jerk = 1.0e3, 1.0e8
+    t = np.asarray(d["time_whole"][:])[:, None]
+    ux, vx, fx = nodal(d, "DisplacementX"), nodal(d, "VelocityX"), nodal(d, "Force_DensityX")
+    steps = len(t) - 1
+    u = acc * t * t / 2 + jerk * t ** 3 / 6 + jerk * t * dt * dt / 12
+    v = acc * t + jerk * t * t / 2
+    # A converged step is off by at most TOL / rho in u and 2 / dt times that in v; with no stiffness a v error
+    # carries into every later u, so N steps give at most N (1 + 2 N) TOL / rho in u.
+    du = steps * (1 + 2 * steps) * tol / RHO
+    ok = report("u vs A t^2/2 + J t^3/6 + J t dt^2/12 [m]", np.abs(ux - u).max(), du + ROUND * np.abs(u).max())
+    # The driven point (smallest x) reports the step's mean rate (u_n+1 - u_n) / dt, as Verlet does.
+    x = np.asarray(d["coordx"][:])
+    free = x > x.min()
+    ok &= report("free v vs A t + J t^2/2 [m/s]", np.abs(vx[:, free] - v).max(),
+                 steps * 2.0 / dt * tol / RHO + ROUND * np.abs(v).max())
+    rate = np.diff(u[:, 0]) / dt
+    ok &= report("driven v vs (u_n+1 - u_n) / dt [m/s]", np.abs(vx[1:, ~free][:, 0] - rate).max(),
+                 ROUND * np.abs(v).max() + 4 * np.finfo(float).eps * np.abs(u).max() / dt)
+    # Internal force of the residual relative motion: stiffness ~ 9 K per unit relative displacement (sdof).
+    ok &= report("internal force density [N/m^3]", np.abs(fx).max(), 9 * K * (2 * du + ROUND * np.abs(u).max()))
+    return ok
+
+
 def main():
-    if len(sys.argv) != 5 or sys.argv[1] not in ("sdof", "bar"):
+    if len(sys.argv) != 5 or sys.argv[1] not in ("sdof", "bar", "rigid"):
         sys.exit(__doc__)
     d = netCDF4.Dataset(sys.argv[2])
     dt, tol = float(sys.argv[3]), float(sys.argv[4])
-    ok = sdof(d, dt, tol) if sys.argv[1] == "sdof" else energy_check(d, dt, tol)
+    ok = {"sdof": sdof, "bar": energy_check, "rigid": rigid}[sys.argv[1]](d, dt, tol)
     print("PASS" if ok else "FAIL")
     sys.exit(0 if ok else 1)
 
