@@ -35,6 +35,17 @@ foreach(case ${implicit_cases})
   endforeach()
 endforeach()
 
+# A 3D block (every bond direction, geometric nonlinearity) in free vibration: Newmark at dt (np 1) and dt/2
+# (np 2) converges at second order to Verlet at dt/10 (check_newmark.py converge).
+periforge_run(implicit_block_3d_verlet_np1 ${IMP}/block_3d_verlet.xml 1)
+periforge_run(implicit_block_3d_newmark_coarse_np1 ${IMP}/block_3d_newmark_coarse.xml 1)
+periforge_run(implicit_block_3d_newmark_fine_np2 ${IMP}/block_3d_newmark_fine.xml 2)
+set(blk ${CMAKE_CURRENT_BINARY_DIR}/regression/implicit_block_3d)
+periforge_check(implicit_block_3d_converges_to_verlet
+  "implicit_block_3d_verlet_np1;implicit_block_3d_newmark_coarse_np1;implicit_block_3d_newmark_fine_np2"
+  ${PY} ${IMP}/check_newmark.py converge ${blk}_verlet_np1/block_3d_verlet.e
+  ${blk}_newmark_coarse_np1/block_3d_newmark_coarse.e ${blk}_newmark_fine_np2/block_3d_newmark_fine.e)
+
 # Bad Implicit input: one line naming the file and the parameter.
 add_test(NAME implicit_input_errors COMMAND ${PY} ${IMP}/run_implicit_errors.py ${PERIFORGE_EXE} ${REG}/bar/bar_3d.xml)
 set_tests_properties(implicit_input_errors PROPERTIES LABELS "regression")
