@@ -46,6 +46,14 @@ periforge_check(implicit_block_3d_converges_to_verlet
   ${PY} ${IMP}/check_newmark.py converge ${blk}_verlet_np1/block_3d_verlet.e
   ${blk}_newmark_coarse_np1/block_3d_newmark_coarse.e ${blk}_newmark_fine_np2/block_3d_newmark_fine.e)
 
+# The same block yielding (Elastic Plastic): Implicit at dt/2 (np 2) against Verlet at dt/10, displacement and
+# plastic strain within 1 % (check_newmark.py plastic: the material state committed once per converged step).
+periforge_run(implicit_ep_block_3d_verlet_np1 ${IMP}/ep_block_3d_verlet.xml 1)
+periforge_run(implicit_ep_block_3d_newmark_np2 ${IMP}/ep_block_3d_newmark.xml 2)
+periforge_check(implicit_ep_block_3d_vs_verlet "implicit_ep_block_3d_verlet_np1;implicit_ep_block_3d_newmark_np2"
+  ${PY} ${IMP}/check_newmark.py plastic ${CMAKE_CURRENT_BINARY_DIR}/regression/implicit_ep_block_3d_verlet_np1/ep_block_3d_verlet.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/implicit_ep_block_3d_newmark_np2/ep_block_3d_newmark.e)
+
 # Bad Implicit input: one line naming the file and the parameter.
 add_test(NAME implicit_input_errors COMMAND ${PY} ${IMP}/run_implicit_errors.py ${PERIFORGE_EXE} ${REG}/bar/bar_3d.xml)
 set_tests_properties(implicit_input_errors PROPERTIES LABELS "regression")
