@@ -171,7 +171,9 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
   std::ostream& print(std::ostream& os, int indent) const override {
     for (int i = 0; i < indent; ++i) os << ' ';
     os << "force residual " << last_.residual << " N (tolerance " << tol_ << " N), density "
-       << last_.residualDensity << "\n";
+       << last_.residualDensity;
+    if (abs_ > 0) os << " (tolerance " << abs_ << ")";
+    os << "\n";
     return os;
   }
   // The factor by which the residual r must still fall to pass (either criterion), 0 if unknown.
