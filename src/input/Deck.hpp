@@ -127,7 +127,7 @@ struct Deck {
 
   const MaterialSpec& material(const std::string& name) const;
   double maxHorizon() const;
-  bool hasVerlet() const;
+  bool hasDynamicSolver() const;  // a solver whose entry is dynamic (Verlet, Implicit)
 };
 
 // Reads (XML, or YAML for .yaml/.yml) and validates a deck; InputError naming the file and parameter.
