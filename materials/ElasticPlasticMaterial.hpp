@@ -36,6 +36,7 @@ class ElasticPlasticMaterial : public Material {
   double density_;
   J2Parameters params_;
   bool shearCorrection_ = false;
+  bool disablePlasticity_ = false;  // Peridigm's "Disable Plasticity" (Elastic Plastic only): elastic kernel
 };
 
 }  // namespace pf

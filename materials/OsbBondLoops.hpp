@@ -15,6 +15,7 @@
 #include <cstring>
 #include <type_traits>
 
+#include "core/BondDamage.hpp"
 #include "core/BondFamily.hpp"
 
 // AVX-512 / AVX2 / baseline copies of a kernel, chosen once at load time from the CPU (GCC ifunc).
@@ -251,6 +252,19 @@ PF_INLINE int gatherFamily(const FamilyView& fam, const Quad* __restrict pos, in
   if (fam.fraction) {
     const double* __restrict fr = fam.fraction + b0;
     for (int b = 0; b < n; ++b) vj[b] *= fr[b];
+  }
+  // Bond damage: a broken bond leaves the family. V_j = 0 drops it from every family sum (dilatation, yield
+  // norms: Peridigm multiplies each of its terms by 1 - bond damage) and y_j - y_i = 0 makes its force and
+  // reaction zero; its length stays, so no quotient divides by zero. Only blocks with a damage model pay.
+  if (fam.brokenN) {
+    double* __restrict keep = sc.a;  // the caller's work array, free until the gather returns
+    breakBonds(fam, i, len, keep);
+    for (int b = 0; b < n; ++b) {
+      vj[b] *= keep[b];
+      d0[b] *= keep[b];
+      d1[b] *= keep[b];
+      d2[b] *= keep[b];
+    }
   }
   // Padding of the last chunk (see PaddedTail).
   for (int b = n; b < roundUpToLanes(n); ++b) {

@@ -33,6 +33,11 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
     for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);
   }
+  for (const BlockModel& b : blocks_) hasDamage_ = hasDamage_ || b.criticalStretch > 0.0;
+  if (hasDamage_) {
+    specs.push_back({"Bond_Damage", Location::Bond, true, false});
+    specs.push_back({"Damage", Location::Node, false, true});
+  }
   state_.allocate(specs, n, layout_->family().numBonds());
   const std::size_t no = static_cast<std::size_t>(layout_->numOverlap());
   uOverlap_.assign(3 * no, 0.0);
@@ -45,6 +50,26 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
       for (int i = b.begin; i < b.end; ++i) prescribed_[3 * i + 2] = 1;
 }
 
+FamilyView Model::view(const BlockModel& b) {
+  FamilyView v = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+  if (b.criticalStretch > 0.0) {  // else brokenN stays null: the kernels' undamaged path
+    v.brokenN = state_.committed("Bond_Damage");
+    v.broken = state_.trial("Bond_Damage");
+    v.damage = state_.trial("Damage");
+    v.criticalStretch = b.criticalStretch;
+  }
+  return v;
+}
+
+double Model::brokenBonds() const {
+  double n = 0.0;
+  if (hasDamage_) {
+    const double* d = state_.committed("Bond_Damage");
+    for (std::size_t b = 0; b < layout_->family().numBonds(); ++b) n += d[b];
+  }
+  return sum(n);
+}
+
 void Model::internalForce(const double* u, double* f) {
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
@@ -52,10 +77,7 @@ void Model::internalForce(const double* u, double* f) {
   // A material that fails on one rank (a return mapping that does not converge there) must fail on every
   // rank before the collective exportAdd, or the others wait in it forever: one allreduce per evaluation.
   collectively(layout_->comm(), [&] {
-    for (const BlockModel& b : blocks_) {
-      FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
-      b.material->computeForce(view, yOverlap_.data(), state_, fOverlap_.data());
-    }
+    for (const BlockModel& b : blocks_) b.material->computeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
   });
   layout_->exportAdd(fOverlap_.data(), f, 3);
 }
@@ -80,10 +102,8 @@ bool Model::forceDerivative(const double* u, const double* du, double* df) {
   duOverlap_.resize(yOverlap_.size());
   layout_->importToOverlap(du, duOverlap_.data(), 3);
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
-  for (const BlockModel& b : blocks_) {
-    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
-    if (!b.material->forceDerivative(view, yOverlap_.data(), duOverlap_.data(), state_, fOverlap_.data())) return false;
-  }
+  for (const BlockModel& b : blocks_)
+    if (!b.material->forceDerivative(view(b), yOverlap_.data(), duOverlap_.data(), state_, fOverlap_.data())) return false;
   layout_->exportAdd(fOverlap_.data(), df, 3);
   return true;
 }

@@ -22,6 +22,7 @@ struct BlockModel {
   double horizon = 0;
   int begin = 0, end = 0;
   std::shared_ptr<const Material> material;
+  double criticalStretch = 0.0;  // the block's Critical Stretch damage model; 0: no damage model (nothing breaks)
 };
 
 // A displacement, velocity or body-force component imposed on owned nodes: value(x, t), times factor[k]
@@ -66,6 +67,11 @@ class Model {
   // Per bond of the owned nodes: the materials' pair stiffness c_b (see Material::pairStiffness).
   std::vector<double> pairStiffness() const;
   StateStore& state() { return state_; }
+  // Whether some block has a damage model: then the state has "Bond_Damage" (per bond, history: 1 broken,
+  // 0 intact; committed and rolled back with the step) and "Damage" (per node, Peridigm's output).
+  bool hasDamage() const { return hasDamage_; }
+  // Broken bonds of the owned nodes in the committed state, summed over ranks (collective).
+  double brokenBonds() const;
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions
@@ -88,6 +94,8 @@ class Model {
   std::vector<double> x_, volume_, m_, density_, bound_;
   std::vector<BlockModel> blocks_;
   StateStore state_;
+  bool hasDamage_ = false;
+  FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;
   std::vector<char> prescribed_;
