@@ -136,7 +136,7 @@ void MicroelasticMaterial::computeForce(const FamilyView& fam, const double* y, 
     for (int a = 0; a < 3; ++a) force[3 * i + a] += fi[a];
     if (energy) energy[i] = 0.25 * c * w * Vi;
     const int n = fam.offsets[i + 1] - fam.offsets[i];
-    if (fam.brokenN) fam.damage[i] = n > 0 ? broken / n : 0.0;
+    if (fam.brokenN) finishNode(fam, i, n, broken);  // every flag was written: always a valid trial
   }
 }
 

@@ -1,38 +1,35 @@
 #pragma once
 // Critical-stretch bond breaking (Peridigm's "Critical Stretch" damage model), as every kernel applies it:
 // a bond is broken (trial) if it was broken at the last committed step or its stretch
-// (|y_j - y_i| - |xi|) / |xi| exceeds FamilyView::criticalStretch now. Broken bonds never heal.
+// (|y_j - y_i| - |xi|) / |xi| exceeds FamilyView::criticalStretch now. Broken bonds never heal. The OSB
+// kernels apply bondBroken in their gather (OsbBondLoops.hpp), scalar loops breakBond.
+//
+// Contract of the per-bond flags (both copies valid for every bond at all times) without streaming them at
+// every evaluation: bonds never heal, so a node with no broken bond committed (brokenCountN = 0) had none at
+// the step before either, and the trial copy StateStore::commit swaps in (that step's flags) is all 0 for it
+// unless an earlier evaluation of the same step broke some (then its trial count is not 0). A kernel
+// therefore writes a node's trial flags only when the node has broken bonds now or had in its last trial.
 #include "BondFamily.hpp"
 
 namespace pf {
 
-// Node i's bonds given their deformed lengths len[k] (k = 0 .. n-1, bond offsets[i] + k): writes the trial
-// flags and the node's Damage, and returns keep[k] = 0 for a broken bond, 1 for an intact one. Only for
-// fam.brokenN != null. The stretch is computed as Peridigm computes it (a quotient), so a bond at the
-// threshold breaks at the same step.
-inline void breakBonds(const FamilyView& fam, int i, const double* __restrict len, double* __restrict keep) {
-  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-  const double* __restrict x = fam.refLength + b0;
-  const double* __restrict bn = fam.brokenN + b0;
-  double* __restrict bt = fam.broken + b0;
-  const double sc = fam.criticalStretch;
-  double count = 0.0;
-  for (int k = 0; k < n; ++k) {
-    const double b = (bn[k] != 0.0 || (len[k] - x[k]) / x[k] > sc) ? 1.0 : 0.0;
-    bt[k] = b;
-    keep[k] = 1.0 - b;
-    count += b;
-  }
-  // Peridigm's Damage: the plain share of broken bonds (its damage models divide by the neighbour count).
-  fam.damage[i] = n > 0 ? count / n : 0.0;
-}
+// The rule for one bond: broken before (committed flag bn != 0) or stretched past s_c now. The stretch test
+// is len - |xi| > s_c |xi| (no division: the kernels apply it to every bond at every evaluation); it differs
+// from Peridigm's quotient (len - |xi|)/|xi| > s_c only for a stretch equal to s_c to within round-off.
+inline bool bondBroken(double bn, double len, double xi, double sc) { return (bn != 0.0) | (len - xi > sc * xi); }
 
 // The same rule for one bond b of length len, for scalar loops: writes its trial flag, returns whether broken.
-// The caller sets the node's Damage (the share of its bonds for which this returned true).
+// The caller sets the node's Damage and trial count (finishNode).
 inline bool breakBond(const FamilyView& fam, int b, double len) {
-  const bool broken = fam.brokenN[b] != 0.0 || (len - fam.refLength[b]) / fam.refLength[b] > fam.criticalStretch;
+  const bool broken = bondBroken(fam.brokenN[b], len, fam.refLength[b], fam.criticalStretch);
   fam.broken[b] = broken ? 1.0 : 0.0;
   return broken;
+}
+
+// After a scalar loop over node i's n bonds with `broken` of them broken: its trial count and Damage.
+inline void finishNode(const FamilyView& fam, int i, int n, double broken) {
+  fam.brokenCount[i] = broken;
+  fam.damage[i] = n > 0 ? broken / n : 0.0;
 }
 
 }  // namespace pf

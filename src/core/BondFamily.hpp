@@ -40,6 +40,10 @@ struct FamilyView {
   const double* brokenN = nullptr;  // per bond, committed: 1 broken, 0 intact
   double* broken = nullptr;         // per bond, trial: written for every bond of [begin, end) on each evaluation
   double* damage = nullptr;         // per owned node: share of its bonds that are broken (Peridigm's Damage)
+  // Per owned node: its number of broken bonds, committed and trial. A node with none committed has all its
+  // flags 0 in both copies, so a kernel need not read or write them while it breaks nothing (BondDamage.hpp).
+  const double* brokenCountN = nullptr;
+  double* brokenCount = nullptr;
   double criticalStretch = 0.0;     // a bond breaks once (|y_j - y_i| - |xi|) / |xi| exceeds it
   int numNodes = 0;                 // size of the overlap node arrays (x, volume, y, force: per node)
 };

@@ -36,6 +36,7 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
   for (const BlockModel& b : blocks_) hasDamage_ = hasDamage_ || b.criticalStretch > 0.0;
   if (hasDamage_) {
     specs.push_back({"Bond_Damage", Location::Bond, true, false});
+    specs.push_back({"Broken_Bonds", Location::Node, true, false});
     specs.push_back({"Damage", Location::Node, false, true});
   }
   state_.allocate(specs, n, layout_->family().numBonds());
@@ -56,6 +57,8 @@ FamilyView Model::view(const BlockModel& b) {
     v.brokenN = state_.committed("Bond_Damage");
     v.broken = state_.trial("Bond_Damage");
     v.damage = state_.trial("Damage");
+    v.brokenCountN = state_.committed("Broken_Bonds");
+    v.brokenCount = state_.trial("Broken_Bonds");
     v.criticalStretch = b.criticalStretch;
   }
   return v;

@@ -68,7 +68,8 @@ class Model {
   std::vector<double> pairStiffness() const;
   StateStore& state() { return state_; }
   // Whether some block has a damage model: then the state has "Bond_Damage" (per bond, history: 1 broken,
-  // 0 intact; committed and rolled back with the step) and "Damage" (per node, Peridigm's output).
+  // 0 intact; committed and rolled back with the step), "Broken_Bonds" (per node, history: how many) and
+  // "Damage" (per node, Peridigm's output).
   bool hasDamage() const { return hasDamage_; }
   // Broken bonds of the owned nodes in the committed state, summed over ranks (collective).
   double brokenBonds() const;

@@ -1,7 +1,8 @@
 // Critical-stretch bond damage (core/BondDamage.hpp) in every model, on a two-point body (one bond each
 // way, along x, |xi| = 1 mm):
 //  1. a bond stretched past s_c breaks: no force, Damage 1; stretched back below s_c, or compressed, it
-//     stays broken (never heals); a rolled-back step restores the unbroken bond (StateStore history);
+//     stays broken (never heals); a rolled-back step, or a later evaluation of the same step below s_c (a
+//     quasi-static iterate), restores the unbroken bond (StateStore history, BondDamage.hpp's contract);
 //  2. the energy a broken bond releases is the energy it stored at the break, against closed forms that
 //     do not use the kernels: PMB pair energy c s^2 |xi| V^2 / 2 (Microelastic) and, for the OSB Elastic
 //     model, 9 kappa s^2 V (a one-bond family has e^d = 0 and theta = 3 s, so W = kappa theta^2 / 2 per
@@ -9,11 +10,14 @@
 // Units: SI; K = 100 GPa, G = 60 GPa, V = 1e-9 m^3 (3D), thickness 1 mm in 2D.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
+#include "LatticeFixture.hpp"
 #include "core/BondFamily.hpp"
 #include "core/Material.hpp"
 #include "core/StateStore.hpp"
@@ -34,6 +38,7 @@ struct TwoPoints {
     m.assign(2, kL * kL * kV);  // sum omega |xi|^2 V_j of the one bond
     std::vector<pf::StateSpec> specs = mat->stateSpecs();
     specs.push_back({"Bond_Damage", pf::Location::Bond, true, false});  // as Model declares them
+    specs.push_back({"Broken_Bonds", pf::Location::Node, true, false});
     specs.push_back({"Damage", pf::Location::Node, false, true});
     state.allocate(specs, 2, 2);
     if (state.has("Stored_Elastic_Energy")) mat->enableOutput("Stored_Elastic_Energy");
@@ -46,6 +51,8 @@ struct TwoPoints {
     f.brokenN = state.committed("Bond_Damage");
     f.broken = state.trial("Bond_Damage");
     f.damage = state.trial("Damage");
+    f.brokenCountN = state.committed("Broken_Bonds");
+    f.brokenCount = state.trial("Broken_Bonds");
     f.criticalStretch = kSc;
     return f;
   }
@@ -110,6 +117,12 @@ TEST(BondDamage, BreaksNeverHealsAndRollsBack) {
     EXPECT_TRUE(b.trialBroken());
     EXPECT_EQ(b.damage(0), 1.0);
     EXPECT_EQ(b.damage(1), 1.0);
+    // A later evaluation of the same step (a quasi-static iterate) below s_c: the trial break is forgotten.
+    EXPECT_NE(b.force(0.5 * kSc), 0.0);
+    EXPECT_FALSE(b.trialBroken());
+    EXPECT_EQ(b.damage(0), 0.0);
+    EXPECT_EQ(b.force(1.5 * kSc), 0.0);
+    EXPECT_TRUE(b.trialBroken());
     // A failed step is rolled back: the break was trial only, the bond is whole again.
     b.state.rollback();
     EXPECT_NE(b.force(0.5 * kSc), 0.0);
@@ -171,4 +184,55 @@ TEST(BondDamage, ReleasedEnergyIsStoredEnergyAtBreak) {
     EXPECT_EQ(b.force(1.01 * kSc), 0.0);
     EXPECT_EQ(b.energy(), 0.0);
   }
+}
+
+// The flag contract (core/BondDamage.hpp): the kernels skip the flags of intact nodes, yet after every
+// evaluation the trial flags of every bond equal the rule applied from the committed flags, and committing
+// or rolling back keeps both copies valid. A 5^3 lattice (every node's family), random growing motion, a
+// random sequence of commits, rollbacks and repeated evaluations within a step; checked bond by bond.
+TEST(BondDamage, FlagsFollowTheRuleThroughCommitsAndRollbacks) {
+  pftest::Lattice L = pftest::makeLattice(5, false, 1e-3, 2.015, 0.0, pf::Influence::One, false);
+  auto mat = pf::makeMaterial("Elastic", solid("3D"));
+  pf::StateStore state;
+  std::vector<pf::StateSpec> specs = mat->stateSpecs();
+  specs.push_back({"Bond_Damage", pf::Location::Bond, true, false});
+  specs.push_back({"Broken_Bonds", pf::Location::Node, true, false});
+  specs.push_back({"Damage", pf::Location::Node, false, true});
+  state.allocate(specs, L.numNodes, L.fam.numBonds());
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), pick(0.0, 1.0);
+  std::vector<double> F(3 * L.numNodes), y(3 * L.numNodes);
+  int breaksSeen = 0;
+  for (int it = 0; it < 60; ++it) {
+    const double amp = 2e-5 * it;  // up to 1.2e-3 of dx 1e-3: stretches up to about 2 %, s_c = 1 %
+    for (int k = 0; k < 3 * L.numNodes; ++k) y[k] = L.x[k] + amp * u(rng);
+    pf::FamilyView f = L.view();
+    f.brokenN = state.committed("Bond_Damage");
+    f.broken = state.trial("Bond_Damage");
+    f.damage = state.trial("Damage");
+    f.brokenCountN = state.committed("Broken_Bonds");
+    f.brokenCount = state.trial("Broken_Bonds");
+    f.criticalStretch = kSc;
+    std::fill(F.begin(), F.end(), 0.0);
+    mat->computeForce(f, y.data(), state, F.data());
+    for (int i = 0; i < L.numNodes; ++i) {
+      int count = 0;
+      for (int b = L.fam.offsets[i]; b < L.fam.offsets[i + 1]; ++b) {
+        const int j = L.fam.neighbors[b];
+        const double d[3] = {y[3 * j] - y[3 * i], y[3 * j + 1] - y[3 * i + 1], y[3 * j + 2] - y[3 * i + 2]};
+        const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        const bool expect = f.brokenN[b] != 0.0 || len - L.fam.refLength[b] > kSc * L.fam.refLength[b];
+        ASSERT_EQ(f.broken[b], expect ? 1.0 : 0.0) << "iteration " << it << " node " << i << " bond " << b;
+        count += expect;
+      }
+      ASSERT_EQ(f.brokenCount[i], count);
+      ASSERT_EQ(f.damage[i], static_cast<double>(count) / (L.fam.offsets[i + 1] - L.fam.offsets[i]));
+      breaksSeen += count;
+    }
+    const double r = pick(rng);
+    if (r < 0.5) state.commit();
+    else if (r < 0.75) state.rollback();
+    // else: another evaluation of the same step
+  }
+  EXPECT_GT(breaksSeen, 0);  // the sequence did break bonds
 }
