@@ -54,14 +54,38 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
 FamilyView Model::view(const BlockModel& b) {
   FamilyView v = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
   if (b.criticalStretch > 0.0) {  // else brokenN stays null: the kernels' undamaged path
-    v.brokenN = state_.committed("Bond_Damage");
+    v.brokenN = rounds_ ? baseBroken_.data() : state_.committed("Bond_Damage");
+    v.brokenCountN = rounds_ ? baseCount_.data() : state_.committed("Broken_Bonds");
     v.broken = state_.trial("Bond_Damage");
     v.damage = state_.trial("Damage");
-    v.brokenCountN = state_.committed("Broken_Bonds");
     v.brokenCount = state_.trial("Broken_Bonds");
-    v.criticalStretch = b.criticalStretch;
+    // Frozen: no stretch exceeds infinity, so exactly the base set is broken.
+    v.criticalStretch = rounds_ && !breaking_ ? HUGE_VAL : b.criticalStretch;
   }
   return v;
+}
+
+void Model::beginBreakRounds() {
+  if (!hasDamage_) return;
+  const std::size_t nb = layout_->family().numBonds();
+  const double* flags = state_.committed("Bond_Damage");
+  const double* count = state_.committed("Broken_Bonds");
+  baseBroken_.assign(flags, flags + nb);
+  baseCount_.assign(count, count + numOwned());
+  rounds_ = true;
+  breaking_ = false;
+}
+
+double Model::adoptBreaks() {
+  if (!hasDamage_) return 0.0;
+  const std::size_t nb = layout_->family().numBonds();
+  const double* flags = state_.trial("Bond_Damage");
+  const double* count = state_.trial("Broken_Bonds");
+  double added = 0.0;
+  for (int i = 0; i < numOwned(); ++i) added += count[i] - baseCount_[i];
+  baseBroken_.assign(flags, flags + nb);
+  baseCount_.assign(count, count + numOwned());
+  return sum(added);
 }
 
 double Model::brokenBonds() const {

@@ -73,6 +73,17 @@ class Model {
   bool hasDamage() const { return hasDamage_; }
   // Broken bonds of the owned nodes in the committed state, summed over ranks (collective).
   double brokenBonds() const;
+
+  // Quasi-static break rounds (solvers/BreakRounds.hpp; docs/input.md, "Damage Models"). Between
+  // beginBreakRounds and endBreakRounds the kernels take their flags from a base set (the committed one at
+  // first) instead of the committed one: setBreaking(false) keeps exactly the base broken (no new break, for
+  // the iterations of a solve), setBreaking(true) adds the bonds stretched past s_c (the check at a converged
+  // state); adoptBreaks makes the last evaluation's trial flags the base and returns how many bonds that added
+  // (collective). No-ops without damage.
+  void beginBreakRounds();
+  void setBreaking(bool on) { breaking_ = on; }
+  double adoptBreaks();
+  void endBreakRounds() { rounds_ = false; }
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions
@@ -96,6 +107,8 @@ class Model {
   std::vector<BlockModel> blocks_;
   StateStore state_;
   bool hasDamage_ = false;
+  bool rounds_ = false, breaking_ = true;      // break rounds: active, new breaks allowed
+  std::vector<double> baseBroken_, baseCount_;  // the base set of the rounds (per bond, per owned node)
   FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;

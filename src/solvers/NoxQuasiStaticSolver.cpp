@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <functional>
 
+#include "BreakRounds.hpp"
 #include "LoadStepping.hpp"
 #include "NoxPairPreconditioner.hpp"
 #include "core/Material.hpp"
@@ -326,11 +327,23 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   const bool root = model.layout().rank() == 0;
   const std::vector<double> uA(u);
   predictStep(model, tB, u, duPrev);
-  Outcome o = newton(model, u, tB);
+  // With damage, Newton solves with the broken set frozen and the breaks are decided at each converged
+  // state (BreakRounds.hpp); without, this is one Newton solve.
+  Outcome o;
+  int iterations = 0, linear = 0;
+  o.converged = solveWithBreakRounds(model, u, [&] {
+    o = newton(model, u, tB);
+    iterations += o.iterations;
+    linear += o.linearIterations;
+    return o.converged;
+  }, tB);
+  o.iterations = iterations;
+  o.linearIterations = linear;
   if (o.converged) {
     std::vector<double> f(model.numDofs());
     model.internalForce(u.data(), f.data());  // the last residual may have been a perturbed one
     model.commit();
+    model.endBreakRounds();
     for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
     return o;
   }
@@ -353,10 +366,15 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
                         tB, depth);
   predictStep(model, tB, u, duPrev);
   AdrSolver adr(opt_.fallback);
-  const AdrSolver::StepResult r = adr.relax(model, u, tB, uA, step_);  // throws SolverFailure if it fails too
+  AdrSolver::StepResult r{};
+  solveWithBreakRounds(model, u, [&] {
+    r = adr.relax(model, u, tB, uA, step_);  // throws SolverFailure if it fails too
+    return true;
+  }, tB);
   std::vector<double> f(model.numDofs());
   model.internalForce(u.data(), f.data());
   model.commit();
+  model.endBreakRounds();
   for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
   return Outcome{true, r.iterations, 0, r.residual, r.tolerance};
 }
