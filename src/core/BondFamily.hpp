@@ -37,7 +37,7 @@ struct FamilyView {
   bool unitInfluence = false;       // influence[b] == 1 for every bond: kernels may skip reading it
   double horizon = 0.0;
   // Bond damage (core/BondDamage.hpp); brokenN null: the block has no damage model and nothing breaks.
-  const double* brokenN = nullptr;  // per bond, committed: 1 broken, 0 intact
+  const double* brokenN = nullptr;  // per bond, committed (or a quasi-static step's base set): 1 broken, 0 intact
   double* broken = nullptr;         // per bond, trial: written for every bond of [begin, end) on each evaluation
   double* damage = nullptr;         // per owned node: share of its bonds that are broken (Peridigm's Damage)
   // Per owned node: its number of broken bonds, committed and trial. A node with none committed has all its

@@ -88,15 +88,6 @@ double Model::adoptBreaks() {
   return sum(added);
 }
 
-double Model::brokenBonds() const {
-  double n = 0.0;
-  if (hasDamage_) {
-    const double* d = state_.committed("Bond_Damage");
-    for (std::size_t b = 0; b < layout_->family().numBonds(); ++b) n += d[b];
-  }
-  return sum(n);
-}
-
 void Model::internalForce(const double* u, double* f) {
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];

@@ -71,8 +71,6 @@ class Model {
   // 0 intact; committed and rolled back with the step), "Broken_Bonds" (per node, history: how many) and
   // "Damage" (per node, Peridigm's output).
   bool hasDamage() const { return hasDamage_; }
-  // Broken bonds of the owned nodes in the committed state, summed over ranks (collective).
-  double brokenBonds() const;
 
   // Quasi-static break rounds (solvers/BreakRounds.hpp; docs/input.md, "Damage Models"). Between
   // beginBreakRounds and endBreakRounds the kernels take their flags from a base set (the committed one at

@@ -6,9 +6,7 @@
 
 namespace pf {
 
-bool solveWithBreakRounds(Model& model, std::vector<double>& u, const std::function<bool()>& solve, double t,
-                          double* breaksOut) {
-  if (breaksOut) *breaksOut = 0.0;
+bool solveWithBreakRounds(Model& model, std::vector<double>& u, const std::function<bool()>& solve, double t) {
   if (!model.hasDamage()) return solve();
   model.beginBreakRounds();
   std::vector<double> f(model.numDofs());
@@ -23,7 +21,6 @@ bool solveWithBreakRounds(Model& model, std::vector<double>& u, const std::funct
       model.setBreaking(true);
       model.internalForce(u.data(), f.data());
       const double added = model.adoptBreaks();
-      if (breaksOut) *breaksOut += added;
       if (added == 0.0) return true;  // trial = this evaluation: the base set, in equilibrium
       if (round == kMaxBreakRounds) {
         char msg[200];

@@ -16,8 +16,7 @@ constexpr int kMaxBreakRounds = 50;
 // solve(): one solve of the step from the current u (true: converged; may throw SolverFailure). On true the
 // model's trial state is its evaluation at the final u with the final broken set, ready to commit, and the
 // model is still in its break rounds: the caller commits and then calls model.endBreakRounds(). On false
-// or a throw the rounds are ended here. breaksOut (optional): bonds broken in this step.
-bool solveWithBreakRounds(Model& model, std::vector<double>& u, const std::function<bool()>& solve, double t,
-                          double* breaksOut = nullptr);
+// or a throw the rounds are ended here. t: the step's end, for the message.
+bool solveWithBreakRounds(Model& model, std::vector<double>& u, const std::function<bool()>& solve, double t);
 
 }  // namespace pf
