@@ -1,7 +1,8 @@
 #pragma once
 // "Microelastic": the bond-based prototype microelastic solid (PMB of Silling & Askari 2005, Eq. 17; bonds
 // break only with a Damage Model, core/BondDamage.hpp): pair force density f = c omega s M,
-// s = (|Y| - |xi|)/|xi|, M = Y/|Y|, with the micromodulus c set so that an isotropic stretch stores the continuum energy (3D: c = 18K/(pi delta^4)).
+// s = (|Y| - |xi|)/|xi|, M = Y/|Y|, with the micromodulus c set so that an isotropic stretch stores the
+// continuum energy (3D: c = 18K/(pi delta^4)).
 // 3D and plane strain have nu = 1/4, plane stress nu = 1/3. Declares Stored_Elastic_Energy = V_i W_i.
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
