@@ -24,7 +24,7 @@ const char* kUsage =
     "usage: periforge-point [--model NAME] [--dim 3D|PlaneStress|PlaneStrain] [--ratio R] "
     "[--path uniaxial|shear|cyclic]\n"
     "                       [--param \"Name=value\"]... [--E Pa] [--nu v] [--sy Pa] [--K Pa] [--H Pa]\n"
-    "                       [--strain s] [--steps n] [--partial-volume 0|1]\n"
+    "                       [--strain s] [--steps n] [--time T] [--partial-volume 0|1]\n"
     "  Homogeneous deformation y = (I + eps) X of one lattice point's family (spacing 1 mm, horizon R mm):\n"
     "  uniaxial: eps_xx = s; shear: eps_xy = eps_yx = s/2; cyclic: eps_xx 0 -> s -> -s -> s.\n"
     "  Defaults: Elastic Plastic Hardening, 3D, 10, uniaxial, 0.012, 120, 0.\n"
@@ -38,6 +38,7 @@ const char* kUsage =
     "  Correction Factor = true): --param \"Yield Normalization=Discrete\" for the lattice-consistent constants.\n"
     "  --dim PlaneStress|PlaneStrain sets Plane Stress|Strain and Thickness = 1 mm.\n"
     "  --partial-volume 1 weights each bond by the share of its cell inside the horizon.\n"
+    "  --time T: the path takes T seconds (default 1), step k at T k / steps: the time rate-dependent models see.\n"
     "  CSV: step,strain, then every output field the model declares (its registry outputs) that it writes\n"
     "  in this setting, by name (e.g. Von_Mises_Stress, Equivalent_Plastic_Strain, Stored_Elastic_Energy).\n";
 
@@ -52,7 +53,7 @@ double number(const std::string& flag, const std::string& text) {
 struct Options {
   std::map<std::string, std::string> opt = {{"--model", "Elastic Plastic Hardening"}, {"--dim", "3D"}, {"--ratio", "10"},
                                             {"--path", "uniaxial"}, {"--strain", "0.012"}, {"--steps", "120"},
-                                            {"--partial-volume", "0"}};
+                                            {"--time", "1"}, {"--partial-volume", "0"}};
   std::map<std::string, std::string> shortcuts;  // --E, --nu, ... as given
   std::vector<std::string> params;               // --param, in order
 };
@@ -122,6 +123,8 @@ int run(const Options& o) {
   const double ratio = number("--ratio", o.opt.at("--ratio")), amp = number("--strain", o.opt.at("--strain"));
   const double stepsD = number("--steps", o.opt.at("--steps"));
   const int steps = static_cast<int>(stepsD);
+  const double duration = number("--time", o.opt.at("--time"));
+  if (!(duration > 0.0)) throw pf::InputError("periforge-point: --time must be > 0");
   if (!(ratio >= 1.0)) throw pf::InputError("periforge-point: --ratio must be >= 1");
   if (steps < 1 || steps != stepsD) throw pf::InputError("periforge-point: --steps must be a positive integer");
   if (path != "uniaxial" && path != "shear" && path != "cyclic")
@@ -149,6 +152,7 @@ int run(const Options& o) {
     std::array<double, 9> F{1, 0, 0, 0, 1, 0, 0, 0, 1};
     if (path == "shear") { F[1] = F[3] = 0.5 * e; } else { F[0] += e; }
     mp.deform(F);
+    mp.setTime(duration * k / steps);
     mp.evaluate();
     std::printf("%d,%.10g", k, e);
     for (const std::string& c : columns) std::printf(",%.10g", mp.value(c));

@@ -2,10 +2,12 @@
 // core/MaterialEntry.hpp. Adding a model = one file pair in materials/ plus one line here.
 #include "core/MaterialEntry.hpp"
 
+#include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
 #include "HardeningPlasticity.hpp"
 #include "MicroelasticMaterial.hpp"
+#include "ViscoplasticCorrespondenceMaterial.hpp"
 
 namespace pf {
 
@@ -15,6 +17,8 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticPlasticMaterial::entry(),
       HardeningPlasticity::entry(),
       MicroelasticMaterial::entry(),
+      ElasticCorrespondenceMaterial::entry(),
+      ViscoplasticCorrespondenceMaterial::entry(),
   };
   return entries;
 }

@@ -46,6 +46,10 @@ struct FamilyView {
   double* brokenCount = nullptr;
   double criticalStretch = 0.0;     // a bond breaks once (|y_j - y_i| - |xi|) / |xi| exceeds it
   int numNodes = 0;                 // size of the overlap node arrays (x, volume, y, force: per node)
+  // Time of the state being evaluated (the time the solver last imposed boundary conditions for) and of
+  // the reference state (the run's first such time). Rate-independent models ignore both; a rate-dependent
+  // one keeps its own committed time as node history (docs/extending.md, "Time").
+  double time = 0.0, startTime = 0.0;
 };
 
 inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,

@@ -22,6 +22,7 @@ struct SolverEntry {
   // Load-stepping solvers step through Initial Time + k (Final Time - Initial Time) / n, n = "Number of
   // Load Steps" (or a "Time Steps" list, where declared); the others run from Initial to Final Time.
   bool loadSteps = false;
+  bool dynamic = false;  // integrates inertia: its velocities are physical and it may write Acceleration
   std::function<std::unique_ptr<Solver>(const ParameterValues& options, const ParamTree& passThrough)> create;
 };
 

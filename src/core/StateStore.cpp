@@ -13,13 +13,13 @@ void StateStore::allocate(const std::vector<StateSpec>& specs, int numNodes, std
       if (it->second.spec.where != s.where) throw std::logic_error("state field '" + s.name + "' declared twice with different locations");
       it->second.spec.history = it->second.spec.history || s.history;
       it->second.spec.output = it->second.spec.output || s.output;
-      if (it->second.spec.history && it->second.committed.empty()) it->second.committed.assign(n, 0.0);
+      if (it->second.spec.history && it->second.committed.empty()) it->second.committed.assign(n, it->second.spec.initial);
       continue;
     }
     Field f;
     f.spec = s;
-    f.trial.assign(n, 0.0);
-    if (s.history) f.committed.assign(n, 0.0);
+    f.trial.assign(n, s.initial);
+    if (s.history) f.committed.assign(n, s.initial);
     fields_.emplace(s.name, std::move(f));
   }
 }

@@ -15,6 +15,8 @@ struct StateSpec {
   Location where = Location::Node;
   bool history = false;     // needs committed/trial pair
   bool output = false;      // may be requested in Output Variables
+  double initial = 0.0;     // value of every entry (trial and committed) before the first step, e.g. 1 for
+                            // a diagonal component of a tensor that starts as the identity
 };
 
 class StateStore {

@@ -147,7 +147,7 @@ double loadTimes(const Deck& deck) {
 
 bool hasNewtonKrylov(const Deck& deck) {
   for (const SolverSpec& s : deck.solvers)
-    if (s.type == "NOXQuasiStatic" || s.type == "QuasiStatic") return true;
+    if (s.type == "NOXQuasiStatic" || s.type == "QuasiStatic" || s.type == "Implicit") return true;
   return false;
 }
 

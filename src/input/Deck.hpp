@@ -141,7 +141,7 @@ struct Deck {
   const MaterialSpec& material(const std::string& name) const;
   const DamageModelSpec* damageModel(const std::string& name) const;  // null for "" (no damage model)
   double maxHorizon() const;
-  bool hasVerlet() const;
+  bool hasDynamicSolver() const;  // a solver whose entry is dynamic (Verlet, Implicit)
 };
 
 // Reads (XML, or YAML for .yaml/.yml) and validates a deck; InputError naming the file and parameter.

@@ -7,6 +7,7 @@
 
 #include "Input.hpp"
 #include "Sections.hpp"
+#include "core/SolverEntry.hpp"
 
 namespace pf {
 
@@ -47,7 +48,7 @@ std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<st
   std::vector<OutputSpec> out;
   std::map<std::string, std::string> files;  // Output Filename -> list
   for (const std::string& n : numberedLists(p, "Output")) {
-    out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasVerlet()));
+    out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver()));
     const std::string& f = out.back().filename;
     if (files.count(f)) fail(deck.file, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");
     files[f] = n;
@@ -109,9 +110,9 @@ double Deck::maxHorizon() const {
   return h;
 }
 
-bool Deck::hasVerlet() const {
+bool Deck::hasDynamicSolver() const {
   for (const SolverSpec& s : solvers)
-    if (s.type == "Verlet") return true;
+    if (findSolver(s.type)->dynamic) return true;
   return false;
 }
 

@@ -28,9 +28,10 @@ void checkVariable(const std::string& var, bool dynamic, const std::string& file
   const std::vector<std::string>& known = knownVariables();
   if (std::find(known.begin(), known.end(), var) == known.end())
     fail(file, path, "'" + param + "' names unknown output variable '" + var + "'");
-  // Peridigm's Verlet integrator defines the acceleration (f + b)/rho it steps with; the quasi-static
-  // solvers have none, so asking for it there is an error rather than a field of zeros.
-  if (var == "Acceleration" && !dynamic) fail(file, path, "'Acceleration' is only written by the Verlet solver");
+  // Peridigm's dynamic integrators (Verlet, Implicit) define the acceleration (f + b)/rho they step with;
+  // the quasi-static solvers have none, so asking for it there is an error rather than a field of zeros.
+  if (var == "Acceleration" && !dynamic)
+    fail(file, path, "'Acceleration' is only written by a dynamic solver (Verlet, Implicit)");
 }
 
 std::vector<std::string> outputVariables(const PL& v, bool dynamic, const std::string& file, const std::string& path) {

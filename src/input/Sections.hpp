@@ -43,7 +43,7 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
 std::vector<ParameterSpec> solverListSpecs();
 SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& listName);
 
-// Output lists. conditions: for "Applied Displacement"; dynamic: a Verlet solver runs (Acceleration).
+// Output lists. conditions: for "Applied Displacement"; dynamic: a dynamic solver runs (Acceleration).
 std::vector<ParameterSpec> outputSpecs();
 std::vector<ParameterSpec> probeSpecs();
 OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& listName,

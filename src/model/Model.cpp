@@ -52,7 +52,7 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
 }
 
 FamilyView Model::view(const BlockModel& b) {
-  FamilyView v = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+  FamilyView v = blockView(b);
   if (b.criticalStretch > 0.0) {  // else brokenN stays null: the kernels' undamaged path
     v.brokenN = rounds_ ? baseBroken_.data() : state_.committed("Bond_Damage");
     v.brokenCountN = rounds_ ? baseCount_.data() : state_.committed("Broken_Bonds");
@@ -98,6 +98,13 @@ void Model::internalForce(const double* u, double* f) {
     for (const BlockModel& b : blocks_) b.material->computeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
   });
   layout_->exportAdd(fOverlap_.data(), f, 3);
+}
+
+FamilyView Model::blockView(const BlockModel& b) const {
+  FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+  view.time = time_;
+  view.startTime = startTime_;
+  return view;
 }
 
 std::vector<double> Model::pairStiffness() const {
@@ -153,6 +160,8 @@ void evaluate(const NodalLoad& load, const std::vector<double>& x, double t, App
 }  // namespace
 
 void Model::applyPrescribed(double t, double* u) const {
+  if (!clockStarted_) startTime_ = t, clockStarted_ = true;
+  time_ = t;
   for (const NodalLoad& l : prescribedLoads_) evaluate(l, x_, t, [u](int k, double v) { u[k] = v; });
 }
 

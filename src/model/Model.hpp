@@ -87,7 +87,11 @@ class Model {
   // Boundary conditions
   void addPrescribedDisplacement(NodalLoad load);
   void addBodyForce(NodalLoad load);
-  void applyPrescribed(double t, double* u) const;   // sets prescribed components of u at time t
+  // Sets prescribed components of u at time t, and makes t the time of the following force evaluations
+  // (FamilyView::time; the first t of the run is FamilyView::startTime). Every solver imposes the boundary
+  // conditions of the time it evaluates, sub-steps included, so rate-dependent materials get the time
+  // without any solver knowing about them.
+  void applyPrescribed(double t, double* u) const;
   void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
@@ -111,6 +115,10 @@ class Model {
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;
   std::vector<char> prescribed_;
+  // The clock applyPrescribed sets (mutable: imposing a time's conditions is what advances it).
+  mutable double time_ = 0.0, startTime_ = 0.0;
+  mutable bool clockStarted_ = false;
+  FamilyView blockView(const BlockModel& b) const;
 };
 
 }  // namespace pf

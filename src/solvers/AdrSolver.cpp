@@ -18,7 +18,7 @@ SolverEntry AdrSolver::entry() {
   e.loadSteps = true;
   e.parameters = {
       S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1),
-      S::real("Relative Tolerance", "residual / load scale (reaction + body force) that ends a step").byDefault("1e-6").positive(),
+      S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step").byDefault("1e-6").positive(),
       S::real("Absolute Tolerance", "residual force-density norm that also ends a step (default: none)").positive(),
       S::integer("Maximum Iterations", "per load step; then the run fails").byDefault("100000").atLeast(1),
       S::real("Safety Factor", "multiplies the fictitious density").byDefault("1").positive(),
@@ -53,7 +53,7 @@ void requireFiniteResidual(Model& model, const ResidualNorms& nr, long step, dou
 }  // namespace
 
 AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, double t,
-                                       const std::vector<double>& uStart, long step) const {
+                                       const std::vector<double>& uStart, long step, double loadFloor) const {
   const int n = model.numDofs();
   const bool root = model.layout().rank() == 0;
   const std::vector<char>& fixed = model.prescribedMask();
@@ -68,7 +68,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
   double tol = 0;
   int it = 0;
   for (;; ++it) {
-    tol = opt_.relativeTolerance * nr.load;
+    tol = opt_.relativeTolerance * loadScale(nr, loadFloor);
     const bool absOk = opt_.absoluteTolerance > 0 && nr.residualDensity <= opt_.absoluteTolerance;
     if (nr.residual <= tol || absOk || nr.residual == 0.0) break;
     if (it >= opt_.maxIterations) {
@@ -105,7 +105,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
     requireFiniteResidual(model, nr, step, t, f, b);
     if (opt_.verbose && root) std::printf("  ADR it %d  residual %.6e  damping %.4f\n", it + 1, nr.residual, c);
   }
-  return {it, nr.residual, tol};
+  return {it, nr.residual, tol, nr.load};
 }
 
 void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
@@ -113,7 +113,7 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
   const SolverResume* resume = takeResume();
   long step = resume ? resume->step : 0;  // for messages
   runLoadSteps(model, u, v, times, observer,
-               [&](std::vector<double>& u, std::vector<double>& duPrev, double, double t) {
+               [&](std::vector<double>& u, std::vector<double>& duPrev, double, double t, double loadFloor) {
                  const std::vector<double> uStepStart(u);
                  predictStep(model, t, u, duPrev);
                  // relax's last force evaluation was at the converged u, so the trial state is that of u
@@ -122,14 +122,14 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
                  int iterations = 0;
                  ++step;
                  solveWithBreakRounds(model, u, [&] {
-                   r = relax(model, u, t, uStepStart, step);
+                   r = relax(model, u, t, uStepStart, step, loadFloor);
                    iterations += r.iterations;
                    return true;
                  }, t);
                  model.commit();
                  model.endBreakRounds();
                  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uStepStart[k];
-                 return StepStats{iterations, -1, r.residual, r.tolerance};
+                 return StepStats{iterations, -1, r.residual, r.tolerance, r.load};
                },
                resume);
 }

@@ -28,13 +28,13 @@ class AdrSolver : public Solver {
   // Relaxes u (prescribed values at t already set, free ones predicted) to equilibrium at time t.
   // uStepStart: the converged state the step started from (the damping estimate works on u - uStepStart).
   // Writes trial state only; throws SolverFailure after Maximum Iterations or at the first non-finite
-  // residual (state rolled back). step: the load step, for messages.
+  // residual (state rolled back). step: the load step, for messages. loadFloor: see loadScale.
   struct StepResult {
     int iterations;
-    double residual, tolerance;
+    double residual, tolerance, load;
   };
   StepResult relax(Model& model, std::vector<double>& u, double t, const std::vector<double>& uStepStart,
-                   long step) const;
+                   long step, double loadFloor) const;
 
  private:
   AdrOptions opt_;

@@ -1,5 +1,6 @@
 #include "LoadStepping.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -48,17 +49,20 @@ void predictStep(const Model& model, double t, std::vector<double>& u, const std
 
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
-                  const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double)>& solveStep,
+                  const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double, double)>& solveStep,
                   const SolverResume* resume) {
   using Clock = std::chrono::steady_clock;
   const int n = model.numDofs();
   const bool root = model.layout().rank() == 0;
   std::vector<double> f(n), duPrev(n, 0.0);
-  const SolverCarry carry{{{"Increment", &duPrev}}, {}};  // the next step's predictor
+  double peakLoad = 0.0;
+  SolverCarry carry{{{"Increment", &duPrev}}, {{"Peak Load", 0.0}}};  // the next step's predictor and tolerance
   const double t0 = times.front();
   const int steps = static_cast<int>(times.size()) - 1;
   if (resume) {
     duPrev = resume->vector("Increment");
+    // A checkpoint written before the peak load was carried resumes with its own step's scale.
+    if (resume->scalars.count("Peak Load")) peakLoad = resume->scalar("Peak Load");
   } else {
     model.applyPrescribed(t0, u.data());
     model.internalForce(u.data(), f.data());
@@ -72,7 +76,9 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     // A condition that is not finite at the step's end fails now, naming its expression, rather than
     // after the solver has spent its iterations (or NOX its step cuts) on a NaN load.
     model.requireFiniteLoads(tB);
-    const StepStats s = solveStep(u, duPrev, tA, tB);
+    const StepStats s = solveStep(u, duPrev, tA, tB, peakLoad);
+    peakLoad = std::max(peakLoad, s.load);
+    carry.scalars[0].second = peakLoad;
     model.internalForce(u.data(), f.data());  // f for output; the state is committed already
     double probe = 0.0;  // non-finite iff some u, v or f is: nothing non-finite is reported
     for (int k = 0; k < n; ++k) {

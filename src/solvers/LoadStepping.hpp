@@ -28,18 +28,25 @@ struct StepStats {
   int iterations = 0;
   int linearIterations = -1;  // -1: the solver has no inner linear solve
   double residual = 0, tolerance = 0;
+  double load = 0;  // the converged step's load scale (ResidualNorms::load)
 };
 
+// The load scale a step's relative tolerance multiplies: the step's own, but never below the largest a
+// converged step has carried (loadFloor). An unloaded body holds residual stresses that the loads before
+// made; with the reactions and body forces gone, a tolerance relative to them alone falls below round-off.
+inline double loadScale(const ResidualNorms& r, double loadFloor) { return r.load > loadFloor ? r.load : loadFloor; }
+
 // The quasi-static load-step loop both implicit solvers share: reports the initial state at times[0], then
-// for each step k = 1 .. times.size()-1 calls solveStep(u, duPrev, times[k-1], times[k]), which must leave u
-// converged at times[k], the state committed and duPrev = the step's increment; prints one progress line,
+// for each step k = 1 .. times.size()-1 calls solveStep(u, duPrev, times[k-1], times[k], loadFloor), which must
+// leave u converged at times[k] (judged with loadScale(norms, loadFloor)), the state committed and duPrev = the
+// step's increment; loadFloor is the largest StepStats::load so far (carried as "Peak Load"); prints one progress line,
 // reports the step with the load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
 // resume (or null): continue after resume->step, whose increment it carries as "Increment" (a restart);
 // each report carries duPrev under that name.
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>& u, std::vector<double>& duPrev, double tA,
-                                                double tB)>& solveStep,
+                                                double tB, double loadFloor)>& solveStep,
                   const SolverResume* resume);
 
 }  // namespace pf

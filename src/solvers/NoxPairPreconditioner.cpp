@@ -13,9 +13,9 @@
 namespace pf {
 
 // The preconditioner matrix: each bond's extension stiffness c V_j n n^T between its two nodes (the
-// reverse bond's c taken as c m_i/m_j), prescribed rows replaced by s on the diagonal.
+// reverse bond's c taken as c m_i/m_j), plus the shift on free diagonals, prescribed rows replaced by s.
 Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& map, double radiusFactor,
-                                          double* scaleOut) {
+                                          const std::vector<double>* shift, double* scaleOut) {
   const DistributedLayout& L = model.layout();
   const BondFamily& fam = L.family();
   const std::vector<int>& gid = L.gids();
@@ -68,6 +68,7 @@ Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& 
         }
       }
       if (!fixed[3 * i + a]) {
+        if (shift) vals[a] += (*shift)[3 * i + a];
         diagTotal += vals[a];
         ++diagCount;
       }
@@ -96,9 +97,9 @@ Teuchos::RCP<Epetra_Operator> factorIfpack(const Teuchos::RCP<Epetra_CrsMatrix>&
                                            int overlap, Teuchos::ParameterList& params) {
   Ifpack factory;
   Teuchos::RCP<Ifpack_Preconditioner> p = Teuchos::rcp(factory.Create(type, A.get(), overlap));
-  if (p.is_null()) throw SolverFailure("NOXQuasiStatic: Ifpack has no preconditioner '" + type + "'");
+  if (p.is_null()) throw SolverFailure("Newton-Krylov: Ifpack has no preconditioner '" + type + "'");
   if (p->SetParameters(params) != 0 || p->Initialize() != 0 || p->Compute() != 0)
-    throw SolverFailure("NOXQuasiStatic: the Ifpack '" + type + "' factorisation of the pair stiffness failed");
+    throw SolverFailure("Newton-Krylov: the Ifpack '" + type + "' factorisation of the pair stiffness failed");
   return p;
 }
 

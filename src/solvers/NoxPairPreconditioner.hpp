@@ -1,5 +1,5 @@
 #pragma once
-// Part of the NOX adapter (with NoxQuasiStaticSolver.cpp; Epetra's stack is allowed here only): the sparse
+// Part of the NOX adapter (with NewtonKrylov.cpp; Epetra's stack is allowed here only): the sparse
 // pair-stiffness matrix that preconditions the matrix-free Newton-Krylov solve, and its Ifpack or ML
 // factorisation.
 #include <Epetra_CrsMatrix.h>
@@ -9,6 +9,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include <string>
+#include <vector>
 
 namespace pf {
 
@@ -16,9 +17,10 @@ class Model;
 
 // Each bond's extension stiffness c V_j n n^T between its two nodes (the reverse bond's c taken as
 // c m_i/m_j), bonds longer than radiusFactor x the node's shortest kept out and the rest stiffened to
-// the family's second moment; prescribed rows hold *scaleOut (the mean free diagonal) alone.
+// the family's second moment; shift (or null, 3 per owned node) is added to the free diagonal (a Newmark
+// step's rho / (beta dt^2)); prescribed rows hold *scaleOut (the mean free diagonal) alone.
 Teuchos::RCP<Epetra_CrsMatrix> pairMatrix(const Model& model, const Epetra_Map& map, double radiusFactor,
-                                          double* scaleOut);
+                                          const std::vector<double>* shift, double* scaleOut);
 
 Teuchos::RCP<Epetra_Operator> factorIfpack(const Teuchos::RCP<Epetra_CrsMatrix>& A, const std::string& type,
                                            int overlap, Teuchos::ParameterList& params);

@@ -11,7 +11,7 @@ namespace {
 using S = ParameterSpec;
 
 std::vector<ParameterSpec> commonSpecs() {
-  return {S::real("Relative Tolerance", "residual / load scale (reaction + body force) that ends a step")
+  return {S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step")
               .byDefault("1e-10").positive(),
           S::real("Absolute Tolerance", "residual force-density norm that ends a step; given alone (without "
                                         "`Relative Tolerance`) it is the only test").positive(),
@@ -23,23 +23,23 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
   NoxOptions o;
   // Peridigm's decks give one of the two; an absolute tolerance alone means just that test.
   const bool absOnly = p.has("Absolute Tolerance") && !p.has("Relative Tolerance");
-  o.relativeTolerance = absOnly ? 0.0 : p.get("Relative Tolerance");
-  o.absoluteTolerance = p.get("Absolute Tolerance", 0.0);
-  o.maxIterations = static_cast<int>(
+  o.newton.relativeTolerance = absOnly ? 0.0 : p.get("Relative Tolerance");
+  o.newton.absoluteTolerance = p.get("Absolute Tolerance", 0.0);
+  o.newton.maxIterations = static_cast<int>(
       p.has("Maximum Solver Iterations") ? p.get("Maximum Solver Iterations") : p.get("Max Solver Iterations", p.get("Maximum Solver Iterations")));
   o.maxCuts = static_cast<int>(p.get("Maximum Load Step Cuts", o.maxCuts));
-  o.verbose = p.flag("Verbose");
-  o.precBondRadius = p.get("Preconditioner Bond Radius", o.precBondRadius);
-  o.nox = passThrough;
+  o.newton.verbose = p.flag("Verbose");
+  o.newton.precBondRadius = p.get("Preconditioner Bond Radius", o.newton.precBondRadius);
+  o.newton.nox = passThrough;
   if (p.has("Nonlinear Solver")) {
     ParamTree::Entry e;
     e.name = "Nonlinear Solver";
     e.kind = ParamTree::Entry::Kind::String;
     e.text = p.text("Nonlinear Solver");
-    o.nox.entries.push_back(e);
+    o.newton.nox.entries.push_back(e);
   }
-  o.fallback.relativeTolerance = std::max(o.relativeTolerance, 1e-10);  // ADR's round-off floor is ~3e-13
-  o.fallback.absoluteTolerance = o.absoluteTolerance;
+  o.fallback.relativeTolerance = std::max(o.newton.relativeTolerance, 1e-10);  // ADR's round-off floor is ~3e-13
+  o.fallback.absoluteTolerance = o.newton.absoluteTolerance;
   return std::unique_ptr<Solver>(new NoxQuasiStaticSolver(o));
 }
 

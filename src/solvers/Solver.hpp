@@ -41,7 +41,8 @@ struct StepReport {
   int step = 0;          // 0 = initial state
   double time = 0.0;
   int iterations = 0;    // solver iterations of this step (0 for explicit steps)
-  double residual = 0.0; // final residual norm of the step (force units), 0 for explicit steps
+  double residual = 0.0; // final residual norm of the step (the solver's measure: force, or Implicit's
+                         // Peridigm residual), 0 for explicit steps
   double tolerance = 0.0;
   double wallSeconds = 0.0;  // wall time of this step
   const SolverCarry* carry = nullptr;  // what resuming after this step needs (see SolverCarry)

@@ -3,6 +3,7 @@
 #include "core/SolverEntry.hpp"
 
 #include "AdrSolver.hpp"
+#include "ImplicitSolver.hpp"
 #include "NoxQuasiStaticSolver.hpp"
 #include "VerletSolver.hpp"
 
@@ -14,6 +15,7 @@ const std::vector<SolverEntry>& solverRegistry() {
       AdrSolver::entry(),
       NoxQuasiStaticSolver::peridigmEntry(),
       NoxQuasiStaticSolver::entry(),
+      ImplicitSolver::entry(),
   };
   return entries;
 }

@@ -17,6 +17,7 @@ SolverEntry VerletSolver::entry() {
   SolverEntry e;
   e.name = "Verlet";
   e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
+  e.dynamic = true;
   e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate; above that estimate "
                                       "a warning, above 2 × it an input error").positive(),
                   S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ)").byDefault("0.8").positive(),

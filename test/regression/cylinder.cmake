@@ -10,4 +10,9 @@ foreach(np 1 2)
   add_test(NAME cylinder_pressure_np${np}
            COMMAND ${PY} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cylinder/run_cylinder.py ${CYL_CMD})
   set_tests_properties(cylinder_pressure_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 300)
+  # Elastic Plastic Hardening (isotropic) loaded past p_L and unloaded, against a 1D radial J2 solution
+  # written in the test (radial_j2.py). Bounds and reasons: run_cylinder_hardening.py.
+  add_test(NAME cylinder_hardening_np${np}
+           COMMAND ${PY} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cylinder/run_cylinder_hardening.py ${CYL_CMD})
+  set_tests_properties(cylinder_hardening_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 300)
 endforeach()

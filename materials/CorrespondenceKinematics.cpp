@@ -1,0 +1,181 @@
+#include "CorrespondenceKinematics.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "core/InputError.hpp"
+#include "core/Material.hpp"
+
+namespace pf {
+namespace {
+
+// The weight of bond b in every family sum: omega V_j (times the partial-volume fraction).
+inline double bondWeight(const FamilyView& fam, int b) {
+  const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
+  const double v = fam.volume[fam.neighbors[b]];
+  return fam.fraction ? w * v * fam.fraction[b] : w * v;
+}
+
+std::string pointName(const FamilyView& fam, int i) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "the point at (%.6g, %.6g, %.6g)", fam.x[3 * i], fam.x[3 * i + 1], fam.x[3 * i + 2]);
+  return buf;
+}
+
+// K is singular for a family without three non-coplanar bonds; in floating point it is then merely
+// ill-conditioned. det(K) / (tr K / d)^d is 1 for an isotropic family and 0 for a degenerate one.
+const double kMinShapeQuality = 1e-8;
+
+// K and N = sum w Y (x) xi of owned node i, with the number of bonds and det K / (tr K / d)^d.
+struct FamilySums {
+  Mat3 K{}, N{};
+  int bonds = 0;
+  double quality = 0.0;
+};
+
+FamilySums familySums(const FamilyView& fam, int i, const double* y, bool planar) {
+  FamilySums s;
+  Mat3& K = s.K;
+  Mat3& N = s.N;
+  const double* xi0 = fam.x + 3 * i;
+  const double* yi = y + 3 * i;
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    const double w = bondWeight(fam, b);
+    if (w == 0.0) continue;
+    ++s.bonds;
+    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
+    const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) {
+        K[3 * a + c] += w * xi[a] * xi[c];
+        N[3 * a + c] += w * Y[a] * xi[c];
+      }
+  }
+  if (planar) {
+    const double d2 = K[0] * K[4] - K[1] * K[3], t2 = 0.5 * (K[0] + K[4]);
+    s.quality = t2 > 0 ? d2 / (t2 * t2) : 0.0;
+  } else {
+    const double t3 = trace(K) / 3.0;
+    s.quality = t3 > 0 ? det(K) / (t3 * t3 * t3) : 0.0;
+  }
+  return s;
+}
+
+}  // namespace
+
+bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out) {
+  const FamilySums s = familySums(fam, i, y, planar);
+  if (!(s.quality > kMinShapeQuality)) return false;
+  const Mat3& K = s.K;
+  if (planar) {  // the 2x2 in-plane block; z stays the identity
+    const double d2 = K[0] * K[4] - K[1] * K[3];
+    out.Kinv = {K[4] / d2, -K[1] / d2, 0, -K[3] / d2, K[0] / d2, 0, 0, 0, 0};
+  } else {
+    inverse(K, out.Kinv);
+  }
+  out.F = mul(s.N, out.Kinv);
+  if (planar) out.F[2] = out.F[5] = out.F[6] = out.F[7] = 0.0, out.F[8] = 1.0;
+  return true;
+}
+
+ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar) {
+  ShapeAndGradient out;
+  if (tryShapeAndGradient(fam, i, y, planar, out)) return out;
+  const FamilySums s = familySums(fam, i, y, planar);
+  throw InputError("correspondence model: the shape tensor K of " + pointName(fam, i) + " is singular (" +
+                   std::to_string(s.bonds) + " bonds; det K / (tr K / d)^d = " + std::to_string(s.quality) +
+                   "): its family needs " + (planar ? "two non-parallel bonds" : "three non-coplanar bonds") +
+                   "; is the horizon too small for the grid?");
+}
+
+PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {
+  Mat3 FmidInv;
+  if (!(inverse(0.5 * (Fn + F), FmidInv) > 0.0))
+    throw ConstitutiveFailure("correspondence model: the deformation gradient is not invertible with det > 0 "
+                              "(a family turned inside out)");
+  const Mat3 L = mul(F - Fn, FmidInv);  // L dt
+  const Mat3 D = sym(L), W = skew(L);
+  // Cayley map of a skew matrix: exactly orthogonal, and for a rigid rotation increment Q (where D = 0 and
+  // W dt = 2 (Q - I)(Q + I)^-1) it returns Q itself.
+  auto cayley = [](const Mat3& S) {
+    Mat3 inv;
+    inverse(identity3() - 0.5 * S, inv);  // I - S/2 is invertible for every skew S
+    return mul(inv, identity3() + 0.5 * S);
+  };
+  // Omega dt from a left stretch V: z_i = e_ijk (V D)_jk, w_i = -e_ijk W_jk / 2, omega = w + (tr V I - V)^-1 z,
+  // Omega_ij = e_ikj omega_k (T&F Eqs. 10-13).
+  auto spin = [&](const Mat3& V) {
+    const Mat3 A = mul(V, D);
+    const double z[3] = {A[5] - A[7], A[6] - A[2], A[1] - A[3]};
+    const double w[3] = {W[7], W[2], W[3]};
+    Mat3 Minv;
+    if (!(std::fabs(inverse(trace(V) * identity3() - V, Minv)) > 0.0))
+      throw ConstitutiveFailure("correspondence model: tr(V) I - V is singular in the Flanagan-Taylor update");
+    double om[3];
+    for (int a = 0; a < 3; ++a) om[a] = w[a] + Minv[3 * a] * z[0] + Minv[3 * a + 1] * z[1] + Minv[3 * a + 2] * z[2];
+    return Mat3{0, -om[2], om[1], om[2], 0, -om[0], -om[1], om[0], 0};
+  };
+  // V enters the spin at the half step: a first pass with V_n predicts R there, V_h = sym(F_mid R_h^T); with
+  // V_n alone the update is first order (the error in R halves with dt instead of quartering).
+  const Mat3 Fmid = 0.5 * (Fn + F);
+  const Mat3 Vh = sym(mulNT(Fmid, mul(cayley(0.5 * spin(Vn)), Rn)));
+  const Mat3 Om = spin(Vh);
+  PolarUpdate out;
+  out.R = mul(cayley(Om), Rn);
+  const Mat3 Rh = mul(cayley(0.5 * Om), Rn);
+  out.V = sym(mulNT(F, out.R));
+  out.dUnrot = mulTN(Rh, mul(D, Rh));
+  return out;
+}
+
+Mat3 piolaFromUnrotated(const Mat3& F, const Mat3& R, const Mat3& tau) {
+  const Mat3 sigma = mul(R, mulNT(tau, R));
+  Mat3 Finv;
+  const double J = inverse(F, Finv);
+  if (!(J > 0.0))
+    throw ConstitutiveFailure("correspondence model: det F <= 0 (a family turned inside out)");
+  return J * mulNT(sigma, Finv);
+}
+
+void addCorrespondenceForce(const FamilyView& fam, int i, const Mat3& A, double* force) {
+  const double* xi0 = fam.x + 3 * i;
+  const double vi = fam.volume[i];
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
+    const double frac = fam.fraction ? fam.fraction[b] : 1.0;
+    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
+    for (int a = 0; a < 3; ++a) {
+      const double T = w * (A[3 * a] * xi[0] + A[3 * a + 1] * xi[1] + A[3 * a + 2] * xi[2]);
+      force[3 * i + a] += T * fam.volume[j] * frac;
+      force[3 * j + a] -= T * vi * frac;
+    }
+  }
+}
+
+void addHourglassForce(const FamilyView& fam, int i, const double* y, const Mat3& F, double c, double* force) {
+  if (c == 0.0) return;
+  const double* xi0 = fam.x + 3 * i;
+  const double* yi = y + 3 * i;
+  const double vi = fam.volume[i];
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    const double frac = fam.fraction ? fam.fraction[b] : 1.0;
+    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
+    const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
+    const double len = std::sqrt(Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2]);
+    if (len == 0.0) continue;
+    double dot = 0.0;  // (Y - F xi) . Y
+    for (int a = 0; a < 3; ++a)
+      dot += (Y[a] - (F[3 * a] * xi[0] + F[3 * a + 1] * xi[1] + F[3 * a + 2] * xi[2])) * Y[a];
+    const double mag = c * dot / (fam.refLength[b] * len * len);  // times Y: the unit vector and |Y| folded in
+    for (int a = 0; a < 3; ++a) {
+      force[3 * i + a] += mag * Y[a] * fam.volume[j] * frac;
+      force[3 * j + a] -= mag * Y[a] * vi * frac;
+    }
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,46 @@
+#pragma once
+// The kinematics every correspondence (non-ordinary state-based) model shares, per owned node of a family:
+// shape tensor K and deformation gradient F (Foster et al. 2010 Eqs. 10, 13), the Flanagan-Taylor rotation
+// update with the unrotated strain increment (Eqs. 14-18), first Piola stress (Eqs. 23-24), the force state
+// T<xi> = omega P K^-1 xi (Eq. 25) and Peridigm's hourglass force. Plain arrays in, no state.
+#include "core/BondFamily.hpp"
+#include "Tensor3.hpp"
+
+namespace pf {
+
+struct ShapeAndGradient {
+  Mat3 Kinv;  // K^-1 (planar: the in-plane 2x2 inverse, zz = 0)
+  Mat3 F;     // deformation gradient (planar: F_zz = 1, no out-of-plane shear)
+};
+
+// K = sum omega xi (x) xi V_j and F = (sum omega Y (x) xi V_j) K^-1 of owned node i (V_j times the bond's
+// partial-volume fraction). planar: the family lies in z = 0. Throws InputError naming the point when K is
+// singular or ill-conditioned (fewer than three non-coplanar bonds, two non-parallel ones in 2D).
+ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar);
+// The same without the throw: false when K is singular (out is then unset).
+bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out);
+
+// One step of the Flanagan & Taylor (1987) polar update from F_n to F: the increment L dt = (F - F_n) F_mid^-1
+// (F_mid = (F_n + F)/2), D dt = sym, W dt = skew; the spin of the rotation Omega = W + (tr V I - V)^-1 z
+// (T&F Eqs. 10-13) with V at the half step (predicted from V_n), integrated by the Cayley map
+// R = (I - Omega/2)^-1 (I + Omega/2) R_n (T&F Eq. 39): second order in dt; the left stretch V = sym(F R^T). Returns the unrotated strain increment d dt = R_h^T (D dt) R_h with R_h the
+// rotation at the half step (D dt is a midpoint quantity). Throws ConstitutiveFailure if F_mid is singular.
+struct PolarUpdate {
+  Mat3 R, V;   // at the end of the step
+  Mat3 dUnrot; // d dt (Foster Eq. 18 times dt)
+};
+PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn);
+
+// First Piola-Kirchhoff stress P = det(F) sigma F^-T with sigma = R tau R^T (Foster Eqs. 23-24).
+Mat3 piolaFromUnrotated(const Mat3& F, const Mat3& R, const Mat3& tau);
+
+// Adds the force state T<xi> = omega A xi with A = P K^-1 of owned node i: f_i += T V_j, f_j -= T V_i.
+void addCorrespondenceForce(const FamilyView& fam, int i, const Mat3& A, double* force);
+
+// Peridigm's hourglass (zero-energy mode) force of owned node i: per bond, with the deformed bond Y and
+// its affine image F xi, T = c ((Y - F xi) . Y/|Y|) / |xi| Y/|Y|, added as f_i += T V_j, f_j -= T V_i.
+// c = Hourglass Coefficient times the micromodulus of the bond-based solid with the model's bulk
+// modulus (CorrespondenceMaterial). Zero for every affine motion.
+void addHourglassForce(const FamilyView& fam, int i, const double* y, const Mat3& F, double c, double* force);
+
+}  // namespace pf

@@ -1,0 +1,179 @@
+#include "CorrespondenceMaterial.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "CorrespondenceKinematics.hpp"
+#include "core/InputError.hpp"
+
+namespace pf {
+namespace {
+
+const char* kFull[9] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};  // row-major
+const char* kSym[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};                      // toSym6 order
+const double kPi = 3.14159265358979323846;
+
+// A tensor stored as one node field per component (the output layer writes node scalars).
+struct TensorField {
+  double* trial[9];
+  const double* committed[9];
+  int n = 0;
+  TensorField(StateStore& s, const std::string& base, bool symmetric) : n(symmetric ? 6 : 9) {
+    for (int c = 0; c < n; ++c) {
+      const std::string name = base + (symmetric ? kSym[c] : kFull[c]);
+      trial[c] = s.trial(name);
+      committed[c] = s.committed(name);
+    }
+  }
+  Mat3 committedAt(int i) const {
+    double v[9];
+    for (int c = 0; c < n; ++c) v[c] = committed[c][i];
+    return n == 6 ? fromSym6(v) : Mat3{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
+  }
+  void set(int i, const Mat3& a) {
+    double v[9];
+    if (n == 6) toSym6(a, v);
+    for (int c = 0; c < n; ++c) trial[c][i] = n == 6 ? v[c] : a[c];
+  }
+};
+
+void addTensorSpecs(std::vector<StateSpec>& s, const std::string& base, bool symmetric, bool output, bool identity) {
+  for (int c = 0; c < (symmetric ? 6 : 9); ++c) {
+    const bool diagonal = symmetric ? c < 3 : c % 4 == 0;
+    s.push_back({base + (symmetric ? kSym[c] : kFull[c]), Location::Node, true, output, identity && diagonal ? 1.0 : 0.0});
+  }
+}
+
+// 3D, or Plane Strain with a Thickness. No Plane Stress: its out-of-plane stretch would have to come from
+// the stress update's zero-stress condition; the parameter is not taken, so a deck with it is refused.
+Dimension correspondenceDimension(const MaterialInput& in, const std::string& model, double* thickness) {
+  const std::string where = in.inputFile + ": material '" + in.name + "' (" + model + ")";
+  if (!in.flag("Plane Strain")) {
+    if (in.has("Thickness")) throw InputError(where + ": 'Thickness' is only for Plane Strain");
+    *thickness = 0.0;
+    return Dimension::ThreeD;
+  }
+  if (!in.has("Thickness")) throw InputError(where + ": 'Thickness' is needed by Plane Strain");
+  *thickness = in.get("Thickness");
+  return Dimension::PlaneStrain;
+}
+
+}  // namespace
+
+CorrespondenceMaterial::CorrespondenceMaterial(const MaterialInput& in, const std::string& model)
+    : moduli_(elasticModuliFrom(in)), dim_(correspondenceDimension(in, model, &thickness_)),
+      density_(in.get("Density")), hourglass_(in.get("Hourglass Coefficient")) {}
+
+std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters() {
+  using P = ParameterSpec;
+  return {
+      P::real("Density", "mass density [kg/m^3]").need().positive(),
+      P::real("Bulk Modulus", "give exactly two of the four elastic constants").positive(),
+      P::real("Shear Modulus").positive(),
+      P::real("Young's Modulus").positive(),
+      P::real("Poisson's Ratio").above(-1.0).below(0.5),
+      P::flag("Plane Strain", "2D plane-strain model (points in z = 0, needs Thickness)").byDefault("false"),
+      P::real("Thickness", "out-of-plane thickness of a 2D model [m]").positive(),
+      P::real("Hourglass Coefficient",
+              "weight of the zero-energy-mode force, times the bond-based micromodulus (Peridigm)").need().nonNegative(),
+  };
+}
+
+std::vector<std::string> CorrespondenceMaterial::commonOutputs() {
+  std::vector<std::string> out;
+  for (const char* c : kSym) out.push_back(std::string("Unrotated_Cauchy_Stress") + c);
+  out.push_back("Von_Mises_Stress");
+  for (const char* c : kFull) out.push_back(std::string("Deformation_Gradient") + c);
+  return out;
+}
+
+std::vector<StateSpec> CorrespondenceMaterial::stateSpecs() const {
+  std::vector<StateSpec> s;
+  addTensorSpecs(s, "Unrotated_Cauchy_Stress", true, true, false);
+  addTensorSpecs(s, "Deformation_Gradient", false, true, true);
+  addTensorSpecs(s, "Rotation_Tensor", false, false, true);
+  addTensorSpecs(s, "Left_Stretch_Tensor", false, false, true);
+  s.push_back({"Von_Mises_Stress", Location::Node, false, true});
+  for (const StateSpec& m : modelStateSpecs()) s.push_back(m);
+  return s;
+}
+
+double CorrespondenceMaterial::micromodulus(double horizon) const {
+  const double d = horizon;
+  if (dim_ == Dimension::ThreeD) return 18.0 * moduli_.bulk / (kPi * d * d * d * d);
+  const double k2 = moduli_.bulk + moduli_.shear / 3.0;
+  return 12.0 * k2 / (kPi * thickness_ * d * d * d);
+}
+
+double CorrespondenceMaterial::hourglassConstant(double horizon) const { return hourglass_ * micromodulus(horizon); }
+
+Mat3 CorrespondenceMaterial::elasticIncrement(const Mat3& de) const {
+  Mat3 s = (2.0 * moduli_.shear) * deviator(de);
+  const double p = moduli_.bulk * trace(de);
+  s[0] += p, s[4] += p, s[8] += p;
+  return s;
+}
+
+void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
+                                          double* force) const {
+  const bool planar = isPlanar(dim_);
+  TensorField Fs(state, "Deformation_Gradient", false), Rs(state, "Rotation_Tensor", false),
+      Vs(state, "Left_Stretch_Tensor", false), taus(state, "Unrotated_Cauchy_Stress", true);
+  double* vm = state.trial("Von_Mises_Stress");
+  const int n = fam.end - fam.begin;
+  std::vector<Mat3> Kinv(n), F(n), R(n), tauN(n), de(n), tau(n);
+  // Phase 1: kinematics of every owned node, from its own family.
+  for (int k = 0; k < n; ++k) {
+    const int i = fam.begin + k;
+    const ShapeAndGradient sg = shapeAndGradient(fam, i, y, planar);
+    const PolarUpdate pu = flanaganTaylor(Fs.committedAt(i), sg.F, Rs.committedAt(i), Vs.committedAt(i));
+    Kinv[k] = sg.Kinv, F[k] = sg.F, R[k] = pu.R, de[k] = pu.dUnrot, tauN[k] = taus.committedAt(i);
+    Fs.set(i, sg.F), Rs.set(i, pu.R), Vs.set(i, pu.V);
+  }
+  // Phase 2: the model's stress update; phase 3: stress to force state, plus the hourglass force.
+  updateStress(fam, state, tauN, de, tau);
+  const double c = hourglassConstant(fam.horizon);
+  for (int k = 0; k < n; ++k) {
+    const int i = fam.begin + k;
+    taus.set(i, tau[k]);
+    vm[i] = vonMises(tau[k]);
+    addCorrespondenceForce(fam, i, mul(piolaFromUnrotated(F[k], R[k], tau[k]), Kinv[k]), force);
+    addHourglassForce(fam, i, y, F[k], c, force);
+  }
+}
+
+void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {
+  // |dP/dH| <= max(3K, 2mu) for the small-strain elastic map; with a_i = sum omega |K^-1 xi| V_j the point's
+  // own stress contributes <= 2 C a_i^2 and its neighbours' stresses about as much (their a taken equal to
+  // a_i: the view has no ghost families). The hourglass bonds act like bond-based springs c/|xi|.
+  const double C = std::max(3.0 * moduli_.bulk, 2.0 * moduli_.shear);
+  const double c = hourglassConstant(fam.horizon);
+  for (int i = fam.begin; i < fam.end; ++i) {
+    // A singular K is reported by the first force evaluation, which fails on every rank together (this
+    // runs while the model is built, where a throw on one rank would leave the others in a collective).
+    ShapeAndGradient sg;
+    const bool regular = tryShapeAndGradient(fam, i, fam.x, isPlanar(dim_), sg);
+    const Mat3 Kinv = regular ? sg.Kinv : Mat3{};
+    double a = 0.0, h = 0.0;
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      const int j = fam.neighbors[b];
+      const double w = (fam.unitInfluence ? 1.0 : fam.influence[b]) * fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
+      double kx[3] = {0, 0, 0};
+      for (int r = 0; r < 3; ++r)
+        for (int s = 0; s < 3; ++s) kx[r] += Kinv[3 * r + s] * (fam.x[3 * j + s] - fam.x[3 * i + s]);
+      a += w * std::sqrt(kx[0] * kx[0] + kx[1] * kx[1] + kx[2] * kx[2]);
+      h += fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0) / fam.refLength[b];
+    }
+    bound[i] = 4.0 * C * a * a + 2.0 * c * h;
+  }
+}
+
+void CorrespondenceMaterial::pairStiffness(const FamilyView& fam, double* c) const {
+  // The bond-based solid with the same bulk modulus, plus the hourglass spring: a preconditioner only
+  // needs the scale of each bond's stiffness.
+  const double base = micromodulus(fam.horizon) * (1.0 + hourglass_);
+  for (int i = fam.begin; i < fam.end; ++i)
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) c[b] = base / fam.refLength[b];
+}
+
+}  // namespace pf

@@ -1,0 +1,60 @@
+#pragma once
+// Base of the correspondence models (Foster, Silling & Chen 2010; Peridigm's CorrespondenceMaterial): per
+// owned node, K and F from its own family, the Flanagan-Taylor rotation, the model's stress update on the
+// unrotated Cauchy stress, P = J sigma F^-T, T<xi> = omega P K^-1 xi and the hourglass force. Each owned node
+// has its whole family, so this is a one-pass evaluation: no neighbour's stress is needed.
+#include <string>
+#include <vector>
+
+#include "core/Material.hpp"
+#include "core/MaterialEntry.hpp"
+#include "ElasticModuli.hpp"
+#include "Tensor3.hpp"
+
+namespace pf {
+
+class CorrespondenceMaterial : public Material {
+ public:
+  // Reads Density, two elastic constants, Plane Strain / Thickness and Hourglass Coefficient; model names errors.
+  CorrespondenceMaterial(const MaterialInput& in, const std::string& model);
+
+  std::vector<StateSpec> stateSpecs() const override;
+  void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
+  void stiffnessBound(const FamilyView& fam, double* bound) const override;
+  void pairStiffness(const FamilyView& fam, double* c) const override;
+  double density() const override { return density_; }
+  Dimension dimension() const override { return dim_; }
+
+  const ElasticModuli& moduli() const { return moduli_; }
+  // The hourglass force's c (CorrespondenceKinematics.hpp): Hourglass Coefficient times the micromodulus
+  // of the bond-based solid with this bulk modulus, 18 K/(pi delta^4) in 3D (Peridigm) and, in plane
+  // strain, 12 K2/(pi h delta^3) with K2 = K + mu/3 the in-plane bulk modulus (the 2D PMB solid).
+  double hourglassConstant(double horizon) const;
+  double micromodulus(double horizon) const;  // the same without the coefficient
+
+  // The parameters every correspondence model takes (the model's own ones are appended by the caller).
+  static std::vector<ParameterSpec> commonParameters();
+  // Output names of the base fields: Unrotated_Cauchy_Stress{XX,YY,ZZ,XY,YZ,XZ}, Von_Mises_Stress,
+  // Deformation_Gradient{XX,...,ZZ}.
+  static std::vector<std::string> commonOutputs();
+
+ protected:
+  // The constitutive update of the owned nodes [fam.begin, fam.end), in the unrotated frame: from the
+  // committed stress tauN[k] and the unrotated strain increment de[k] = d dt (k = i - fam.begin) to tau[k].
+  // Reads and writes the model's own state; may throw ConstitutiveFailure.
+  virtual void updateStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& tauN,
+                            const std::vector<Mat3>& de, std::vector<Mat3>& tau) const = 0;
+  virtual std::vector<StateSpec> modelStateSpecs() const { return {}; }
+
+  // Hooke's law on an increment: lambda tr(de) I + 2 mu de = K tr(de) I + 2 mu dev(de).
+  Mat3 elasticIncrement(const Mat3& de) const;
+
+ private:
+  ElasticModuli moduli_;
+  double thickness_ = 0.0;  // before dim_: its initialiser writes it
+  Dimension dim_;
+  double density_;
+  double hourglass_;  // Hourglass Coefficient
+};
+
+}  // namespace pf

@@ -1,0 +1,58 @@
+#include "ViscoplasticCorrespondenceMaterial.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace pf {
+
+ViscoplasticCorrespondenceMaterial::ViscoplasticCorrespondenceMaterial(const MaterialInput& in)
+    : CorrespondenceMaterial(in, "Viscoplastic Correspondence"),
+      law_{in.get("Yield Stress"), in.get("Strain Hardening Exponent"), in.get("Rate Sensitivity Exponent"),
+           in.get("Reference Plastic Strain"), in.get("Reference Plastic Strain Rate")} {}
+
+MaterialEntry ViscoplasticCorrespondenceMaterial::entry() {
+  using P = ParameterSpec;
+  std::vector<ParameterSpec> params = commonParameters();
+  params.push_back(P::real("Yield Stress", "Y, quasi-static yield stress [Pa] (Foster et al. 2010 Eq. 59)").need().positive());
+  params.push_back(P::real("Strain Hardening Exponent", "n of Eq. 59").need().positive());
+  params.push_back(P::real("Rate Sensitivity Exponent", "m of Eq. 58").need().positive());
+  params.push_back(P::real("Reference Plastic Strain", "eps_0 of Eq. 59 (dimensionless)").need().positive());
+  params.push_back(P::real("Reference Plastic Strain Rate", "rate_0 of Eq. 58 [1/s]").need().positive());
+  std::vector<std::string> outputs = commonOutputs();
+  outputs.push_back("Equivalent_Plastic_Strain");
+  outputs.push_back("Equivalent_Plastic_Strain_Rate");
+  return {"Viscoplastic Correspondence",
+          "rate-dependent J2 correspondence solid (Foster, Silling & Chen 2010, Eqs. 49-61) with hourglass control",
+          params,
+          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ViscoplasticCorrespondenceMaterial(in)); },
+          outputs};
+}
+
+std::vector<StateSpec> ViscoplasticCorrespondenceMaterial::modelStateSpecs() const {
+  // Viscoplastic_Time starts as NaN: "never committed", the step then starts at FamilyView::startTime. The
+  // rate is history so that an evaluation without time passing (the output pass after a quasi-static
+  // step's commit) reports the rate of the step that led to the state instead of 0.
+  return {{"Equivalent_Plastic_Strain", Location::Node, true, true},
+          {"Equivalent_Plastic_Strain_Rate", Location::Node, true, true},
+          {"Viscoplastic_Time", Location::Node, true, false, std::numeric_limits<double>::quiet_NaN()}};
+}
+
+void ViscoplasticCorrespondenceMaterial::updateStress(const FamilyView& fam, StateStore& state,
+                                                      const std::vector<Mat3>& tauN, const std::vector<Mat3>& de,
+                                                      std::vector<Mat3>& tau) const {
+  const double* epsN = state.committed("Equivalent_Plastic_Strain");
+  const double* timeN = state.committed("Viscoplastic_Time");
+  const double* rateN = state.committed("Equivalent_Plastic_Strain_Rate");
+  double* eps = state.trial("Equivalent_Plastic_Strain");
+  double* rate = state.trial("Equivalent_Plastic_Strain_Rate");
+  double* time = state.trial("Viscoplastic_Time");
+  for (std::size_t k = 0; k < tau.size(); ++k) {
+    const int i = fam.begin + static_cast<int>(k);
+    const double dt = fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
+    const FosterStep s = fosterUpdate(law_, moduli().bulk, moduli().shear, tauN[k], epsN[i], de[k], dt);
+    tau[k] = s.tau, eps[i] = s.epsP, time[i] = fam.time;
+    rate[i] = dt > 0.0 ? s.rate : rateN[i];
+  }
+}
+
+}  // namespace pf

@@ -1,0 +1,197 @@
+#include "ImplicitSolver.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "BreakRounds.hpp"
+#include "FiniteCheck.hpp"
+#include "core/InputError.hpp"
+#include "core/Log.hpp"
+#include "model/Model.hpp"
+
+namespace pf {
+
+SolverEntry ImplicitSolver::entry() {
+  using S = ParameterSpec;
+  SolverEntry e;
+  e.name = "Implicit";
+  e.doc = "Peridigm's implicit dynamics: Newmark-beta with a fixed time step, Newton-Krylov per step";
+  e.dynamic = true;
+  ParameterSpec beta = S::real("Beta", "Newmark's β; ¼ (with `Gamma` ½): the trapezoidal rule, unconditionally stable; "
+                                       "below `Gamma`/2 only conditionally stable (a warning)")
+                           .byDefault("0.25").positive();
+  beta.max = 0.5;  // beyond 1/2 the scheme is no longer second order nor Peridigm's; (0, 1/2]
+  e.parameters = {
+      S::real("Fixed dt", "time step; the run takes floor((Final Time − Initial Time) / dt) steps, as Peridigm")
+          .need().positive(),
+      beta,
+      S::real("Gamma", "Newmark's γ; ½: no numerical damping; above: damping (first order); below ½ the "
+                       "scheme amplifies and is refused").byDefault("0.5").atLeast(0.5),
+      S::real("Absolute Tolerance", "a step converges when β dt² ‖ρa − f − b‖₂ over the free dofs (Peridigm's "
+                                    "residual, kg/m²) is at most this").byDefault("1e-6").positive(),
+      S::integer("Maximum Solver Iterations", "Newton iterations per time step; a step still above the "
+                                              "tolerance stops the run").byDefault("10").atLeast(1),
+      S::flag("Verbose", "print NOX's residual history").byDefault("false")};
+  e.create = [](const ParameterValues& p, const ParamTree&) {
+    ImplicitOptions o;
+    o.dt = p.get("Fixed dt");
+    o.beta = p.get("Beta");
+    o.gamma = p.get("Gamma");
+    o.absoluteTolerance = p.get("Absolute Tolerance");
+    o.newton.maxIterations = static_cast<int>(p.get("Maximum Solver Iterations"));
+    o.newton.verbose = p.flag("Verbose");
+    o.where = p.where();
+    return std::unique_ptr<Solver>(new ImplicitSolver(o));
+  };
+  return e;
+}
+
+ImplicitSolver::ImplicitSolver(ImplicitOptions o) : opt_(std::move(o)) {
+  // Peridigm's residual is beta dt^2 (rho a - f - b); the engine tests the force density |f + b - rho a|.
+  opt_.newton.relativeTolerance = 0.0;
+  opt_.newton.absoluteTolerance = opt_.absoluteTolerance / (opt_.beta * opt_.dt * opt_.dt);
+}
+
+long ImplicitSolver::stepCount(double t0, double t1, double dt) {
+  return static_cast<long>(std::floor((t1 - t0) / dt * (1.0 + 1e-12)));
+}
+
+namespace {
+
+std::string num(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%g", v);
+  return s;
+}
+
+// The state a step starts from and its Newmark predictor, per dof.
+struct Newmark {
+  double dt, beta, gamma;
+  // u~ = u + dt v + dt^2 (1/2 - beta) a and v~ = v + dt (1 - gamma) a: the step's known part.
+  void predict(const std::vector<double>& u, const std::vector<double>& v, const std::vector<double>& a,
+               std::vector<double>& uTilde, std::vector<double>& vTilde) const {
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      uTilde[k] = u[k] + dt * v[k] + dt * dt * (0.5 - beta) * a[k];
+      vTilde[k] = v[k] + dt * (1.0 - gamma) * a[k];
+    }
+  }
+  // From the converged u: a = (u - u~) / (beta dt^2), v = v~ + gamma dt a on free dofs. A prescribed dof
+  // moves as its condition says, not by Newmark's relations: v is the step's mean rate and a zero, as
+  // Verlet keeps them (an initial velocity that disagrees with the prescribed motion would otherwise ring
+  // undamped in a and v for the whole run).
+  void correct(const std::vector<char>& fixed, const std::vector<double>& u, const std::vector<double>& uStart,
+               const std::vector<double>& uTilde, const std::vector<double>& vTilde, std::vector<double>& v,
+               std::vector<double>& a) const {
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      if (fixed[k]) {
+        v[k] = (u[k] - uStart[k]) / dt;
+        a[k] = 0.0;
+      } else {
+        a[k] = (u[k] - uTilde[k]) / (beta * dt * dt);
+        v[k] = vTilde[k] + gamma * dt * a[k];
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void ImplicitSolver::check(const Model&) const {
+  if (opt_.beta < 0.5 * opt_.gamma)
+    warn(opt_.where + ": 'Beta' = " + num(opt_.beta) + " is below 'Gamma' / 2 = " + num(0.5 * opt_.gamma) +
+         ": Newmark's scheme is then only conditionally stable (above its step limit the run grows without bound)");
+}
+
+void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
+                         const std::vector<double>& times, StepObserver& observer) {
+  using Clock = std::chrono::steady_clock;
+  const SolverResume* resume = takeResume();
+  const double t0 = times.front(), t1 = times.back(), dt = opt_.dt;
+  const long steps = stepCount(t0, t1, dt);
+  if (steps < 1)
+    throw InputError(opt_.where + ": 'Fixed dt' = " + num(dt) + " exceeds Final Time - Initial Time = " + num(t1 - t0) +
+                     ": no step");
+  const bool root = model.layout().rank() == 0;
+  if (std::fabs(t0 + steps * dt - t1) > 1e-9 * std::fabs(t1 - t0))
+    warn(opt_.where + ": Final Time - Initial Time is not a multiple of 'Fixed dt': the run ends at t = " +
+         num(t0 + steps * dt) + " (Peridigm's floor)");
+  const int n = model.numDofs();
+  const std::vector<char>& fixed = model.prescribedMask();
+  const Newmark nm{dt, opt_.beta, opt_.gamma};
+
+  Inertia inertia;  // rho / (beta dt^2) on free dofs: the mass term of the step's residual and tangent
+  inertia.coefficient.assign(n, 0.0);
+  inertia.predictor.assign(n, 0.0);
+  for (int k = 0; k < n; ++k)
+    if (!fixed[k]) inertia.coefficient[k] = model.density()[k / 3] / (opt_.beta * dt * dt);
+  NewtonKrylov engine(opt_.newton);
+
+  std::vector<double> f(n), b(n), a(n, 0.0), uStart(n), vTilde(n);
+  // a is all a later step needs besides u, v and the committed state (bit for bit: not recomputed from f).
+  const SolverCarry carry{{{"Acceleration", &a}}, {}};
+  if (resume) {
+    a = resume->vector("Acceleration");
+  } else {
+    model.applyPrescribed(t0, u.data());
+    model.internalForce(u.data(), f.data());
+    model.commit();
+    model.bodyForce(t0, b.data());
+    // Newmark needs the initial acceleration M^-1 (f + b) (Peridigm starts from zero, the same only when
+    // the initial state is force-free, as in its decks).
+    for (int k = 0; k < n; ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
+    requireFiniteState(model, CheckPoint{"Implicit", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
+    observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0, &carry}, u, v, f);
+  }
+  if (root)
+    std::printf("Implicit: Newmark beta = %g, gamma = %g, dt = %.6g s, %ld steps\n", opt_.beta, opt_.gamma, dt, steps);
+
+  const double scaled = opt_.beta * dt * dt;  // Peridigm's residual = scaled x force-density residual
+  for (long s = resume ? resume->step + 1 : 1; s <= steps; ++s) {
+    const auto start = Clock::now();
+    const double t = t0 + s * dt;
+    model.requireFiniteLoads(t);
+    uStart = u;
+    nm.predict(u, v, a, inertia.predictor, vTilde);
+    u = inertia.predictor;
+    model.applyPrescribed(t, u.data());
+    // With damage, Newton solves with the broken set frozen; the breaks are decided at the converged state
+    // and the step is solved again with them (BreakRounds.hpp), as in the quasi-static solvers.
+    NewtonOutcome o;
+    int iterations = 0, linear = 0;
+    o.converged = solveWithBreakRounds(model, u, [&] {
+      o = engine.solve(model, u, t, &inertia);
+      iterations += o.iterations;
+      linear += o.linearIterations;
+      return o.converged;
+    }, t);
+    o.iterations = iterations;
+    o.linearIterations = linear;
+    if (!o.converged) {
+      model.rollback();
+      u = uStart;
+      char msg[300];
+      std::snprintf(msg, sizeof msg, "Implicit: step %ld (t = %g) did not converge in %d Newton iterations: "
+                    "residual beta dt^2 |rho a - f - b| = %.3e > Absolute Tolerance %.3e", s, t, o.iterations,
+                    scaled * o.residualDensity, opt_.absoluteTolerance);
+      throw SolverFailure(msg);
+    }
+    model.internalForce(u.data(), f.data());  // the last evaluation may have been a perturbed one
+    model.commit();
+    model.endBreakRounds();
+    nm.correct(fixed, u, uStart, inertia.predictor, vTilde, v, a);
+    requireFiniteState(model, CheckPoint{"Implicit", s, t}, u, v, f, finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    if (root) {
+      std::printf("time step %4ld/%ld  t = %-12.6g Newton iterations %2d (linear %4d)  residual %.3e (tol %.3e)  "
+                  "wall %.2f s\n", s, steps, t, o.iterations, o.linearIterations, scaled * o.residualDensity,
+                  opt_.absoluteTolerance, wall);
+      std::fflush(stdout);
+    }
+    observer.onStep(StepReport{static_cast<int>(s), t, o.iterations, scaled * o.residualDensity,
+                               opt_.absoluteTolerance, wall, &carry},
+                    u, v, f);
+  }
+}
+
+}  // namespace pf

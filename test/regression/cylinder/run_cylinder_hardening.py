@@ -1,0 +1,137 @@
+#!/usr/bin/env python3
+"""The thick-walled cylinder with hardening, loaded past yield and unloaded (issue 16): Periforge's
+`Elastic Plastic Hardening` (plane strain, Continuum normalisation, isotropic hardening) against the classical
+1D radial J2 solution written in radial_j2.py (geometry in cylinder_case.py).
+
+Load: bore pressure p(t) = 2.5 p_y (1 - |t - 1|), t in [0, 2], 12 NOX steps (6 up, 6 down); p_y = 86.5 MPa,
+2.5 p_y = 1.35 p_L of the perfectly plastic ring; isotropic hardening modulus 20 GPa (E/10). The whole ring is
+plastic at the peak; the unloading is elastic (1D: no reverse yield; residual hoop stress at the bore -173 MPa).
+
+Compared, with bounds and their reasons (BOUNDS below):
+  - residual von Mises stress on the second ring of points (r = a + dx; the bore layer itself has a truncated
+    family, the surface effect, and is not compared): the residual stress the issue asks for;
+  - the bore's peak and residual radial displacement;
+  - no reverse yielding on unloading at r = a + dx (its equivalent plastic strain stays put), as in 1D.
+
+Kinematic hardening (--kinematic, not in ctest): at 2.5 p_y the first unloading step does not converge (Newton
+cut 4 times, then ADR, residual stuck at ~30 N): the scalar back stress is signed by the third moment of t^d
+(the PD analogue of J3), which vanishes in plane-strain plastic flow (sigma_z -> mean stress) and flips between
+iterations. At 2.0 p_y it runs (peak u -8.6 %, residual u -19 %, residual von Mises at a + dx -14 %). See
+docs/validation.md.
+
+usage: run_cylinder_hardening.py PERIFORGE_EXE [MPIRUN... -np N] [--kinematic]
+"""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cylinder_case as C  # noqa: E402
+import radial_j2 as R  # noqa: E402
+
+PEAK = 2.5          # p_max / p_y
+STEPS = 12
+MODULUS = 20.0e9
+# Measured (np 1 and 2, dx = 0.5 mm, delta = 3.015 dx): see the closing note of issue 16 and docs/validation.md.
+BOUNDS = {
+    # Measured -8.4 % (np 1 and 2). Beyond p_L the displacement is hardening-controlled: du/dp is 3x u/p, so
+    # the Pressure layer's resultant on this lattice (the 124 bore points carry 0.987 of p 2 pi a; the count of
+    # lattice points in a <= r < a + dx fluctuates with dx) gives -3.9 %; the lattice's plastic zone the rest.
+    "peak u(a)": 0.12,
+    # Measured -11.2 %: the peak's error minus the elastic recovery's (-1 %), relative to a smaller number.
+    "residual u(a)": 0.15,
+    # Measured -0.5 %. A quarter of the 1D von Mises change over one dx (-24 %) at this radius; a 5 % error in
+    # the yield stress moves it by about 8 %.
+    "residual vm(a+dx)": 0.05,
+}
+VARS = "Displacement Von_Mises_Stress Equivalent_Plastic_Strain"
+
+
+def material(kind):
+    name = "Isotropic" if kind == "iso" else "Kinematic"
+    return f'''<Parameter name="Material Model" type="string" value="Elastic Plastic Hardening"/>
+      <Parameter name="Yield Stress" type="double" value="{C.SIGMA_Y}"/>
+      <Parameter name="{name} Hardening Modulus" type="double" value="{MODULUS}"/>
+      <Parameter name="Yield Normalization" type="string" value="Continuum"/>'''
+
+
+def probe(name, x):
+    return (f'<ParameterList name="{name}"><Parameter name="X" type="double" value="{x}"/>'
+            f'<Parameter name="Y" type="double" value="0.0"/><Parameter name="Z" type="double" value="0.0"/>'
+            f'<Parameter name="Variables" type="string" value="{VARS}"/></ParameterList>\n      ')
+
+
+def run_periforge(cmd, kind):
+    d = tempfile.mkdtemp(prefix="cylinder_hardening")
+    try:
+        p_max = PEAK * C.first_yield_pressure()
+        nox = (f'<ParameterList name="NOXQuasiStatic"><Parameter name="Number of Load Steps" type="int" '
+               f'value="{STEPS}"/></ParameterList>')
+        deck = C.write_case(d, material(kind), [0.0, 2.0], nox, f"{p_max!r}*(1-fabs(t-1))")
+        text = open(deck).read()
+        text = text.replace('value="Displacement"/>', f'value="{VARS}"/>')
+        text = text.replace('<ParameterList name="Outside">', probe("Ring2", C.A + C.DX) + '<ParameterList name="Outside">')
+        open(deck, "w").write(text)
+        p = subprocess.run(cmd + [deck], cwd=d, capture_output=True, text=True, timeout=600)
+        if p.returncode != 0:
+            raise SystemExit(f"run failed ({p.returncode}):\n{p.stdout[-2000:]}\n{p.stderr[-2000:]}")
+        rows = list(csv.DictReader(open(os.path.join(d, "cylinder.csv"))))
+        return {round(float(r["time"]), 6): r for r in rows}
+    finally:
+        shutil.rmtree(d, ignore_errors=True)
+
+
+def reference(kind):
+    """The 1D solution at the same load steps: u(a), u(a + dx), von Mises and eps_p at a + dx."""
+    K, H = (MODULUS, 0.0) if kind == "iso" else (0.0, MODULUS)
+    m = R.RadialJ2(C.A, C.B, C.E, C.NU, C.SIGMA_Y, K, H, elements=400)
+    out = {}
+    for t in np.linspace(0.0, 2.0, STEPS + 1)[1:]:
+        m.solve(PEAK * C.first_yield_pressure() * (1 - abs(t - 1)))
+        rg, s = m.gp_r.ravel(), m.sigma.reshape(-1, 3)
+        ring2 = [np.interp(C.A + C.DX, rg, s[:, k]) for k in range(3)]
+        out[round(t, 6)] = {"u(a)": m.u[0], "vm(a+dx)": R.von_mises(ring2),
+                            "ep(a+dx)": np.interp(C.A + C.DX, rg, m.alpha.ravel())}
+    return out
+
+
+def check(failures, ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def compare(cmd, kind, failures):
+    pd, ref = run_periforge(cmd, kind), reference(kind)
+    ep = {t: float(pd[t]["Probe_Ring2_Equivalent_Plastic_Strain"]) for t in (1.0, 2.0)}
+    measured = {"peak u(a)": (float(pd[1.0]["Probe_Bore_DisplacementX"]), ref[1.0]["u(a)"], "m"),
+                "residual u(a)": (float(pd[2.0]["Probe_Bore_DisplacementX"]), ref[2.0]["u(a)"], "m"),
+                "residual vm(a+dx)": (float(pd[2.0]["Probe_Ring2_Von_Mises_Stress"]), ref[2.0]["vm(a+dx)"], "Pa")}
+    for what, (got, want, unit) in measured.items():
+        err = got / want - 1
+        check(failures, abs(err) < BOUNDS[what], f"{kind} {what} = {got:.4g} {unit}, 1D J2 {want:.4g} {unit}, "
+              f"error {100 * err:+.1f} % (bound {100 * BOUNDS[what]:.0f} %)")
+    grew = ep[2.0] > ep[1.0] * (1 + 1e-6)
+    ref_grew = ref[2.0]["ep(a+dx)"] > ref[1.0]["ep(a+dx)"] * (1 + 1e-6)
+    check(failures, grew == ref_grew, f"{kind} reverse yield on unloading at r = a + dx: "
+          f"{'yes' if grew else 'no'} (eps_p {ep[1.0]:.4g} -> {ep[2.0]:.4g}), 1D J2 {'yes' if ref_grew else 'no'}")
+
+
+def main(argv):
+    kinds = ("iso", "kin") if "--kinematic" in argv else ("iso",)
+    cmd = [a for a in argv[1:] if a != "--kinematic"]
+    failures = []
+    check(failures, R.self_check(), "radial J2 reference: Lame within 1e-4, carries 0.99 p_L, not 1.01 p_L")
+    for kind in kinds:
+        compare(cmd, kind, failures)
+    print(f"{len(failures)} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
