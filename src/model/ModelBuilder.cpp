@@ -37,6 +37,11 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
   };
   auto specOf = [&](const BlockGroupSpec& g, int id) {
     const DamageModelSpec* d = deck.damageModel(g.damageModel);
+    if (d && !materialOf(g.material)->breaksBonds())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model' = '" + g.damageModel + "': material '" +
+                       g.material + "' (" + deck.material(g.material).entry->model +
+                       ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
+                       "Hardening and Microelastic");
     return BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material),
                      d ? d->criticalStretch : 0.0};
   };

@@ -109,6 +109,7 @@ TEST(BondDamage, BreaksNeverHealsAndRollsBack) {
   for (const Case& c : cases()) {
     SCOPED_TRACE(c.model + " " + c.dim);
     TwoPoints b(c.model, c.values);
+    EXPECT_TRUE(b.mat->breaksBonds());  // else a block with a damage model is refused (ModelBuilder)
     EXPECT_LT(b.force(0.5 * kSc), 0.0);  // tension pulls node 1 (at +x) back
     EXPECT_FALSE(b.trialBroken());
     EXPECT_EQ(b.damage(0), 0.0);
