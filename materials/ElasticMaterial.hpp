@@ -22,6 +22,7 @@ class ElasticMaterial : public Material {
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
   void enableOutput(const std::string& name) const override;
+  bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 

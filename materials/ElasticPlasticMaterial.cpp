@@ -40,7 +40,13 @@ ElasticPlasticMaterial::ElasticPlasticMaterial(const MaterialInput& in, bool har
     : moduli_(elasticModuliFrom(in)), density_(in.get("Density")) {
   params_.dim = dimensionFrom(in, &params_.thickness);
   params_.osb = osbConstants(params_.dim, moduli_);
-  params_.yieldStress = in.get("Yield Stress");  // > 0: its spec's range, as every range below
+  params_.yieldStress = in.get("Yield Stress");  // >= 0: its spec's range, as every range below
+  // Peridigm's "Disable Plasticity": the model is its elastic part and the yield stress is not used (its
+  // BondBreakingInitialVelocity-EP deck gives Yield Stress = 0 with it, and its gold file is the Elastic one's).
+  disablePlasticity_ = !hardening && in.flag("Disable Plasticity");
+  if (!(params_.yieldStress > 0.0) && !disablePlasticity_)
+    throw InputError(in.inputFile + ": material '" + in.name + "': 'Yield Stress' = 0: must be > 0" +
+                     (hardening ? std::string("") : std::string(" (or set 'Disable Plasticity' = true)")));
   if (hardening) readHardening(in, params_);
   params_.norm = in.text("Yield Normalization") == "Continuum" ? YieldNormalization::Continuum
                                                                 : YieldNormalization::Discrete;
@@ -50,7 +56,11 @@ ElasticPlasticMaterial::ElasticPlasticMaterial(const MaterialInput& in, bool har
 std::vector<ParameterSpec> ElasticPlasticMaterial::parameters(bool hardening) {
   std::vector<ParameterSpec> params = elasticSolidParameters(hardening ? ShearCorrection::Peridigm3D
                                                                        : ShearCorrection::IgnoredAsPeridigm);
-  params.push_back(ParameterSpec::real("Yield Stress", "initial uniaxial yield stress sigma_y0 [Pa]").need().positive());
+  params.push_back(ParameterSpec::real("Yield Stress", "initial uniaxial yield stress sigma_y0 [Pa]; > 0 unless "
+                                       "plasticity is disabled").need().nonNegative());
+  if (!hardening)
+    params.push_back(ParameterSpec::flag("Disable Plasticity", "Peridigm's switch: true = the Elastic model's "
+                                         "force and dilatation, Yield Stress unused").byDefault("false"));
   params.push_back(ParameterSpec::text("Yield Normalization",
                                        "'Continuum': the paper's and Peridigm's 4 pi delta^5/5, pi h delta^4/2; "
                                        "'Discrete': yield constants from the node's weighted volume m "
@@ -112,7 +122,10 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
     else std::fill(scf + fam.begin, scf + fam.end, 1.0);
   }
   f.scf = shearCorrection_ ? scf : nullptr;
-  osbJ2Force(fam, params_, y, f, force);
+  // Disabled plasticity: the history fields stay at their initial zeros in both copies (never written, so
+  // StateStore::commit swaps zeros), the dilatation and force are the Elastic model's.
+  if (disablePlasticity_) osbElasticDilatationAndForce(fam, params_.osb, y, f.theta, force);
+  else osbJ2Force(fam, params_, y, f, force);
 }
 
 void ElasticPlasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {

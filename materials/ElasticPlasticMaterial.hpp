@@ -24,6 +24,7 @@ class ElasticPlasticMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
+  bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
   double density() const override { return density_; }
   Dimension dimension() const override { return params_.dim; }
 
@@ -36,6 +37,7 @@ class ElasticPlasticMaterial : public Material {
   double density_;
   J2Parameters params_;
   bool shearCorrection_ = false;
+  bool disablePlasticity_ = false;  // Peridigm's "Disable Plasticity" (Elastic Plastic only): elastic kernel
 };
 
 }  // namespace pf

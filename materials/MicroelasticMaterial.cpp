@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/BondDamage.hpp"
 #include "core/InputError.hpp"
 #include "ElasticModuli.hpp"
 
@@ -77,7 +78,7 @@ MaterialEntry MicroelasticMaterial::entry() {
       P::flag("Plane Strain", "2D plane-strain model (nu = 1/4; needs Thickness)").byDefault("false"),
       P::real("Thickness", "out-of-plane thickness of a 2D model [m]").positive(),
   };
-  return {"Microelastic", "bond-based prototype microelastic solid (PMB without breaking, Silling & Askari 2005)",
+  return {"Microelastic", "bond-based prototype microelastic solid (PMB, Silling & Askari 2005; breaks with a Damage Model)",
           params, [](const MaterialInput& in) { return std::unique_ptr<Material>(new MicroelasticMaterial(in)); },
           {"Stored_Elastic_Energy"}};
 }
@@ -114,11 +115,15 @@ void MicroelasticMaterial::computeForce(const FamilyView& fam, const double* y, 
     // f = c omega s M; the stored energy V_i (c_i/4) sum omega s^2 |xi| V_j is the potential of these forces.
     const double c = micromodulus(fam, i), Vi = fam.volume[i];
     const double* yi = y + 3 * i;
-    double fi[3] = {0.0, 0.0, 0.0}, w = 0.0;
+    double fi[3] = {0.0, 0.0, 0.0}, w = 0.0, broken = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       const int j = fam.neighbors[b];
       const double d[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
       const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), xi = fam.refLength[b];
+      if (fam.brokenN && breakBond(fam, b, len)) {  // a broken bond carries no force and stores no energy
+        broken += 1.0;
+        continue;
+      }
       const double omega = bondInfluence(fam, b), fr = bondFraction(fam, b);
       const double s = (len - xi) / xi, g = 0.5 * c * omega * s / len;
       const double vj = fam.volume[j] * fr, vi = Vi * fr;
@@ -130,6 +135,8 @@ void MicroelasticMaterial::computeForce(const FamilyView& fam, const double* y, 
     }
     for (int a = 0; a < 3; ++a) force[3 * i + a] += fi[a];
     if (energy) energy[i] = 0.25 * c * w * Vi;
+    const int n = fam.offsets[i + 1] - fam.offsets[i];
+    if (fam.brokenN) finishNode(fam, i, n, broken);  // every flag was written: always a valid trial
   }
 }
 
@@ -139,6 +146,7 @@ bool MicroelasticMaterial::forceDerivative(const FamilyView& fam, const double* 
   for (int i = fam.begin; i < fam.end; ++i) {
     const double c = micromodulus(fam, i), Vi = fam.volume[i];
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      if (fam.brokenN && fam.broken[b] != 0.0) continue;  // as the force evaluation at y left it
       const int j = fam.neighbors[b];
       double d[3], dd[3];
       for (int a = 0; a < 3; ++a) {

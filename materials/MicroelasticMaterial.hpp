@@ -1,7 +1,8 @@
 #pragma once
-// "Microelastic": the bond-based prototype microelastic solid (PMB of Silling & Askari 2005, Eq. 17,
-// without bond breaking): pair force density f = c omega s M, s = (|Y| - |xi|)/|xi|, M = Y/|Y|, with the
-// micromodulus c set so that an isotropic stretch stores the continuum energy (3D: c = 18K/(pi delta^4)).
+// "Microelastic": the bond-based prototype microelastic solid (PMB of Silling & Askari 2005, Eq. 17; bonds
+// break only with a Damage Model, core/BondDamage.hpp): pair force density f = c omega s M,
+// s = (|Y| - |xi|)/|xi|, M = Y/|Y|, with the micromodulus c set so that an isotropic stretch stores the
+// continuum energy (3D: c = 18K/(pi delta^4)).
 // 3D and plane strain have nu = 1/4, plane stress nu = 1/3. Declares Stored_Elastic_Energy = V_i W_i.
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
@@ -21,6 +22,7 @@ class MicroelasticMaterial : public Material {
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
   void enableOutput(const std::string& name) const override;
+  bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 

@@ -155,6 +155,7 @@ void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const doub
     const double* yi = y + 3 * i;
     double sum = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      if (fam.brokenN && fam.broken[b] != 0.0) continue;  // as set by the force evaluation just before
       const int j = fam.neighbors[b];
       const double d0 = y[3 * j] - yi[0], d1 = y[3 * j + 1] - yi[1], d2 = y[3 * j + 2] - yi[2];
       const double xi = fam.refLength[b];
@@ -193,6 +194,7 @@ void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, con
     dtheta *= c.k * c.D * invm;
     const double iso = (c.A - c.B * c.c) * invm, dev = c.B * invm;
     for (int k = 0; k < nb; ++k) {
+      if (fam.brokenN && fam.broken[off + k] != 0.0) continue;  // no force, no derivative (gatherFamily)
       const int j = nbr[k];
       const double dd[3] = {dy[3 * j] - dy[3 * i], dy[3 * j + 1] - dy[3 * i + 1], dy[3 * j + 2] - dy[3 * i + 2]};
       const double len = sc.len[k], de = sc.a[k];

@@ -36,6 +36,15 @@ struct FamilyView {
   const double* fraction = nullptr;
   bool unitInfluence = false;       // influence[b] == 1 for every bond: kernels may skip reading it
   double horizon = 0.0;
+  // Bond damage (core/BondDamage.hpp); brokenN null: the block has no damage model and nothing breaks.
+  const double* brokenN = nullptr;  // per bond, committed (or a quasi-static step's base set): 1 broken, 0 intact
+  double* broken = nullptr;         // per bond, trial: written for every bond of [begin, end) on each evaluation
+  double* damage = nullptr;         // per owned node: share of its bonds that are broken (Peridigm's Damage)
+  // Per owned node: its number of broken bonds, committed and trial. A node with none committed has all its
+  // flags 0 in both copies, so a kernel need not read or write them while it breaks nothing (BondDamage.hpp).
+  const double* brokenCountN = nullptr;
+  double* brokenCount = nullptr;
+  double criticalStretch = 0.0;     // a bond breaks once (|y_j - y_i| - |xi|) / |xi| exceeds it
   int numNodes = 0;                 // size of the overlap node arrays (x, volume, y, force: per node)
   // Time of the state being evaluated (the time the solver last imposed boundary conditions for) and of
   // the reference state (the run's first such time). Rate-independent models ignore both; a rate-dependent

@@ -55,6 +55,10 @@ class Material {
   // computed. const because blocks share the material; the flag it sets must not change results.
   virtual void enableOutput(const std::string& name) const {}
 
+  // Whether computeForce honours FamilyView's bond damage (core/BondDamage.hpp). A block with a damage model
+  // and a material that does not is refused at input, so no deck silently runs without its breaks.
+  virtual bool breaksBonds() const { return false; }
+
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;
 };

@@ -80,8 +80,14 @@ struct CellGrid {
 
 }  // namespace
 
-void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizon,
-                   BondFamily& family, const std::array<double, 3>* gridCell) {
+void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizonIn,
+                   BondFamily& family, const std::array<double, 3>* gridCell, const std::array<double, 3>* box) {
+  // A box neighbourhood is searched within the ball around the box, then filtered per direction.
+  std::vector<double> horizon = horizonIn;
+  if (box) {
+    const double r = std::sqrt((*box)[0] * (*box)[0] + (*box)[1] * (*box)[1] + (*box)[2] * (*box)[2]);
+    for (double& h : horizon) h = std::max(h, r);
+  }
   const int n = static_cast<int>(points.size() / 3);
   family.offsets.assign(1, 0);
   family.neighbors.clear();
@@ -107,6 +113,7 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
     std::sort(row.begin(), row.end());
     for (int j : row) {
       const double d0 = points[3 * j] - xi[0], d1 = points[3 * j + 1] - xi[1], d2 = points[3 * j + 2] - xi[2];
+      if (box && !(std::fabs(d0) < (*box)[0] && std::fabs(d1) < (*box)[1] && std::fabs(d2) < (*box)[2])) continue;
       if (gridCell) {
         const double f = table.fraction({d0, d1, d2}, horizon[i]);
         if (!(f > 1e-12)) continue;  // corner contacts: no measurable share

@@ -15,7 +15,11 @@ namespace pf {
 // gridCell (optional): the grid's cell edge lengths (0 in a flat direction) for partial volumes: every point
 // whose cell overlaps the horizon ball is a neighbour, and family.fraction gets the share of its cell
 // inside the ball (PartialVolume.hpp). Without it family.fraction stays empty.
+// box (optional, not with gridCell): Peridigm's PdQuickGrid neighbourhood without "NeighborhoodType" (its
+// NoOp norm): j is a neighbour of i iff |x_j - x_i| < box[d] in each direction d, whatever the distance
+// (QuickGridNeighbourhood.hpp gives box); horizon then only feeds the influence function.
 void buildFamilies(const std::vector<double>& points, int numQueries, const std::vector<double>& horizon,
-                   BondFamily& family, const std::array<double, 3>* gridCell = nullptr);
+                   BondFamily& family, const std::array<double, 3>* gridCell = nullptr,
+                   const std::array<double, 3>* box = nullptr);
 
 }  // namespace pf

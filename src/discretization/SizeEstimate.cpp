@@ -194,6 +194,7 @@ SizeEstimate estimateSize(const Deck& deck) {
   e.bonds = e.points * e.family;
   e.loadTimes = loadTimes(deck);
   e.newtonKrylov = hasNewtonKrylov(deck);
+  for (const BlockGroupSpec& b : deck.blocks) e.damage = e.damage || !b.damageModel.empty();
   return e;
 }
 
@@ -206,7 +207,11 @@ MemoryModel memoryModel(const SizeEstimate& e) {
   // iterates) and the pair-stiffness matrix with its ML hierarchy (120 B per bond: 9 entries of 12 B, and
   // ML's share). Measured runs use 0.46-1.0 of it, so it is an upper bound.
   const MemoryModel newton{60.1e6, 90.0, 667.0 + 201.0 * 3.0 * 8.0, 36.0 + 120.0};
-  return e.newtonKrylov ? newton : explicitSolvers;
+  MemoryModel m = e.newtonKrylov ? newton : explicitSolvers;
+  // Bond damage, counted not fitted: the broken flags' committed and trial copies (16 B per bond) and the
+  // quasi-static break rounds' base copy (8 B; allocated by any solver list that is not Verlet: counted always).
+  if (e.damage) m.perBond += 24.0;
+  return m;
 }
 
 double bytesPerRank(const SizeEstimate& e, int np) {

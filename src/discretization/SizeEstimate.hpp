@@ -17,6 +17,7 @@ struct SizeEstimate {
   bool holes = false;       // the deck has holes: points (and bonds) are upper bounds
   bool meshFile = false;    // Text File: the spacing is inferred from the mesh, the family approximate
   bool newtonKrylov = false;  // a NOX solver: its pair-stiffness preconditioner and Krylov basis cost more
+  bool damage = false;        // a block with a damage model: per-bond broken flags (and QS break-round copies)
 };
 
 // Peak resident bytes of one rank = fixed + perRankPoint * points + (perPoint * points + perBond * bonds) / np:

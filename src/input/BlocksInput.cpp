@@ -28,7 +28,8 @@ std::vector<ParameterSpec> blockSpecs() {
                   "space-separated `block_N` (N ≥ 1); a block belongs to one group only. Peridigm's `default` "
                   "(alone, in one group at most): every block of the discretization that no other group names")
               .need(),
-          S::text("Material", "a sub-list name of `Materials`").need(), S::real("Horizon", "horizon δ").need().positive()};
+          S::text("Material", "a sub-list name of `Materials`").need(), S::real("Horizon", "horizon δ").need().positive(),
+          S::text("Damage Model", "a sub-list name of `Damage Models`; none: the block's bonds never break")};
 }
 
 MaterialSpec parseMaterial(const PL& m, const std::string& name, const std::string& file) {
@@ -64,7 +65,7 @@ std::vector<MaterialSpec> parseMaterials(const PL& deck, const std::string& file
 }
 
 std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<MaterialSpec>& materials,
-                                        const std::string& file) {
+                                        const std::vector<DamageModelSpec>& damageModels, const std::string& file) {
   const PL& blocks = requireSublist(deck, "Blocks", file, "top level");
   std::vector<std::string> matNames;
   for (const MaterialSpec& m : materials) matNames.push_back(m.name);
@@ -82,6 +83,14 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
     if (std::find(matNames.begin(), matNames.end(), g.material) == matNames.end())
       fail(file, bpath, "'Material' = '" + g.material + "' is not defined in Materials (defined: " +
                             joinNames(matNames) + ")");
+    if (b.has("Damage Model")) {
+      g.damageModel = b.text("Damage Model");
+      std::vector<std::string> defined;
+      for (const DamageModelSpec& d : damageModels) defined.push_back(d.name);
+      if (std::find(defined.begin(), defined.end(), g.damageModel) == defined.end())
+        fail(file, bpath, "'Damage Model' = '" + g.damageModel + "' is not defined in Damage Models (defined: " +
+                              (defined.empty() ? std::string("none") : joinNames(defined)) + ")");
+    }
     const std::vector<std::string> names = splitWords(b.text("Block Names"));
     if (names.empty()) fail(file, bpath, "'Block Names' is empty");
     for (const std::string& n : names) {

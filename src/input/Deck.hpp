@@ -26,6 +26,9 @@ struct DiscretizationSpec {
   Type type = Type::QuickGrid;
   Influence influence = Influence::One;
   bool partialVolume = false;
+  // PdQuickGrid without "NeighborhoodType" (and without Partial Volume): Peridigm's default neighbourhood,
+  // a box of round(δ/dx) cells per direction (its NoOp norm, QuickGrid.cxx); else the ball |ξ| <= δ.
+  bool boxNeighbourhood = false;
   // PdQuickGrid: box corner, sizes and cells per direction.
   std::array<double, 3> origin{};
   std::array<double, 3> length{};
@@ -47,11 +50,20 @@ struct MaterialSpec {
   MaterialInput values;               // checked against entry->parameters
 };
 
+// A "Damage Models" entry. Only Peridigm's "Critical Stretch" model: a bond breaks, for good, once its
+// stretch (|y_j - y_i| - |xi|) / |xi| exceeds criticalStretch (core/BondDamage.hpp).
+struct DamageModelSpec {
+  std::string name;                   // the sub-list name in Damage Models
+  std::string model;                  // "Critical Stretch"
+  double criticalStretch = 0.0;       // > 0
+};
+
 struct BlockGroupSpec {
   std::string name;                   // the sub-list name in Blocks
   std::vector<int> blockIds;          // block_<n> -> n; empty for Peridigm's "default"
   bool isDefault = false;             // "Block Names" = "default": every block no other group names
   std::string material;               // a MaterialSpec name
+  std::string damageModel;            // a DamageModelSpec name; empty: bonds never break
   double horizon = 0.0;
 };
 
@@ -118,6 +130,7 @@ struct Deck {
   double maxMemory = 0.0;             // "Maximum Memory" in bytes for the whole run (0: MemAvailable only)
   DiscretizationSpec discretization;
   std::vector<MaterialSpec> materials;
+  std::vector<DamageModelSpec> damageModels;
   std::vector<BlockGroupSpec> blocks;
   std::vector<NodeSetSpec> nodeSets;  // user-defined, in deck order
   std::vector<ConditionSpec> conditions;
@@ -126,6 +139,7 @@ struct Deck {
   RestartSpec restart;
 
   const MaterialSpec& material(const std::string& name) const;
+  const DamageModelSpec* damageModel(const std::string& name) const;  // null for "" (no damage model)
   double maxHorizon() const;
   bool hasDynamicSolver() const;  // a solver whose entry is dynamic (Verlet, Implicit)
 };

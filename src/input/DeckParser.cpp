@@ -15,7 +15,8 @@ namespace {
 
 // Top-level sub-lists a deck may hold; Peridigm's numbered Solver<n>/Output<n> lists with n = 1, 2, ...
 std::vector<std::string> topLists(const PL& p, const std::string& file) {
-  std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart"};
+  std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart",
+                                    "Damage Models"};
   for (const std::string stem : {"Solver", "Output"}) {
     const std::vector<std::string> lists = numberedLists(p, stem);
     tops.insert(tops.end(), lists.begin(), lists.end());
@@ -70,7 +71,8 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
   deck.solvers = solvers(p, file);
   deck.discretization = parseDiscretization(requireSublist(p, "Discretization", file, "top level"), file, directory);
   deck.materials = parseMaterials(p, file);
-  deck.blocks = parseBlocks(p, deck.materials, file);
+  deck.damageModels = parseDamageModels(p, file);
+  deck.blocks = parseBlocks(p, deck.materials, deck.damageModels, file);
   applyDefaultLayerWidth(deck.discretization, deck.maxHorizon(), file);
   const std::vector<std::string> generated = generatedNodeSetNames(deck.discretization);
   std::set<std::string> nodeSets(generated.begin(), generated.end());
@@ -94,6 +96,12 @@ const MaterialSpec& Deck::material(const std::string& name) const {
   for (const MaterialSpec& m : materials)
     if (m.name == name) return m;
   throw std::logic_error("no material '" + name + "' in the deck");  // parseBlocks checked every name
+}
+
+const DamageModelSpec* Deck::damageModel(const std::string& name) const {
+  for (const DamageModelSpec& d : damageModels)
+    if (d.name == name) return &d;
+  return nullptr;  // "" (parseBlocks checked every other name)
 }
 
 double Deck::maxHorizon() const {

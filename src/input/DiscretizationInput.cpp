@@ -80,7 +80,10 @@ void parseGenerator(const PL& d, const ParameterValues& v, DiscretizationSpec& s
 std::vector<ParameterSpec> discretizationSpecs(const std::string& type) {
   std::vector<ParameterSpec> s = {
       S::text("Type", "how the points are made (sections below)").need().oneOf(kTypes),
-      S::text("NeighborhoodType", "Peridigm's; only `Spherical` is accepted (and is what is done)").oneOf({"Spherical"}),
+      S::text("NeighborhoodType",
+              "Peridigm's; `Spherical`: neighbours within δ. PdQuickGrid without it (Peridigm's default): every "
+              "point within round(δ/dx) cells in each direction, a box, unless `Partial Volume`; other types: "
+              "always spherical").oneOf({"Spherical"}),
       S::text("Influence Function",
               "`One`, `Parabolic Decay`, `Gaussian`, or an expression in `zeta` and `horizon`").byDefault("One"),
       S::flag("Partial Volume",
@@ -158,6 +161,7 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   }
   s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path);
   s.partialVolume = v.flag("Partial Volume");
+  s.boxNeighbourhood = s.type == DiscretizationSpec::Type::QuickGrid && !v.has("NeighborhoodType") && !s.partialVolume;
   if (s.partialVolume && s.type == DiscretizationSpec::Type::TextFile)
     fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "
                      "Holes): a Text File discretization has no cells to intersect with the horizon");

@@ -36,6 +36,7 @@ std::vector<ParameterTable> parameterTables() {
       {"hole", "Discretization/Holes/<any name> (Rectangle With Holes)", holeSpecs(false)},
       {"hole-box", "Discretization/Holes/<any name> (Box With Holes)", holeSpecs(true)},
       {"blocks", "Blocks/<any name>", blockSpecs()},
+      {"damage: Critical Stretch", "Damage Models/<any name> with Damage Model = Critical Stretch", criticalStretchSpecs()},
       {"node-set-region", "Boundary Conditions/<name> with Type = Node Set Region", regionSpecs()},
       {"condition", "Boundary Conditions/<name> (a condition)", conditionSpecs()},
       {"solver", "Solver (or Solver1, Solver2, ...)", solverListSpecs()},

@@ -25,7 +25,11 @@ std::vector<ParameterSpec> blockSpecs();
 MaterialSpec parseMaterial(const PL& m, const std::string& name, const std::string& file);
 std::vector<MaterialSpec> parseMaterials(const PL& deck, const std::string& file);
 std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<MaterialSpec>& materials,
-                                        const std::string& file);
+                                        const std::vector<DamageModelSpec>& damageModels, const std::string& file);
+
+// Damage Models (optional; before Blocks, which name them).
+std::vector<ParameterSpec> criticalStretchSpecs();
+std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file);
 
 // Boundary Conditions: node sets first (a condition may name a set defined after it), then conditions.
 std::vector<ParameterSpec> regionSpecs();

@@ -33,6 +33,12 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
     for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);
   }
+  for (const BlockModel& b : blocks_) hasDamage_ = hasDamage_ || b.criticalStretch > 0.0;
+  if (hasDamage_) {
+    specs.push_back({"Bond_Damage", Location::Bond, true, false});
+    specs.push_back({"Broken_Bonds", Location::Node, true, false});
+    specs.push_back({"Damage", Location::Node, false, true});
+  }
   state_.allocate(specs, n, layout_->family().numBonds());
   const std::size_t no = static_cast<std::size_t>(layout_->numOverlap());
   uOverlap_.assign(3 * no, 0.0);
@@ -45,6 +51,43 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
       for (int i = b.begin; i < b.end; ++i) prescribed_[3 * i + 2] = 1;
 }
 
+FamilyView Model::view(const BlockModel& b) {
+  FamilyView v = blockView(b);
+  if (b.criticalStretch > 0.0) {  // else brokenN stays null: the kernels' undamaged path
+    v.brokenN = rounds_ ? baseBroken_.data() : state_.committed("Bond_Damage");
+    v.brokenCountN = rounds_ ? baseCount_.data() : state_.committed("Broken_Bonds");
+    v.broken = state_.trial("Bond_Damage");
+    v.damage = state_.trial("Damage");
+    v.brokenCount = state_.trial("Broken_Bonds");
+    // Frozen: no stretch exceeds infinity, so exactly the base set is broken.
+    v.criticalStretch = rounds_ && !breaking_ ? HUGE_VAL : b.criticalStretch;
+  }
+  return v;
+}
+
+void Model::beginBreakRounds() {
+  if (!hasDamage_) return;
+  const std::size_t nb = layout_->family().numBonds();
+  const double* flags = state_.committed("Bond_Damage");
+  const double* count = state_.committed("Broken_Bonds");
+  baseBroken_.assign(flags, flags + nb);
+  baseCount_.assign(count, count + numOwned());
+  rounds_ = true;
+  breaking_ = false;
+}
+
+double Model::adoptBreaks() {
+  if (!hasDamage_) return 0.0;
+  const std::size_t nb = layout_->family().numBonds();
+  const double* flags = state_.trial("Bond_Damage");
+  const double* count = state_.trial("Broken_Bonds");
+  double added = 0.0;
+  for (int i = 0; i < numOwned(); ++i) added += count[i] - baseCount_[i];
+  baseBroken_.assign(flags, flags + nb);
+  baseCount_.assign(count, count + numOwned());
+  return sum(added);
+}
+
 void Model::internalForce(const double* u, double* f) {
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
@@ -52,9 +95,7 @@ void Model::internalForce(const double* u, double* f) {
   // A material that fails on one rank (a return mapping that does not converge there) must fail on every
   // rank before the collective exportAdd, or the others wait in it forever: one allreduce per evaluation.
   collectively(layout_->comm(), [&] {
-    for (const BlockModel& b : blocks_) {
-      b.material->computeForce(blockView(b), yOverlap_.data(), state_, fOverlap_.data());
-    }
+    for (const BlockModel& b : blocks_) b.material->computeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
   });
   layout_->exportAdd(fOverlap_.data(), f, 3);
 }
@@ -86,10 +127,8 @@ bool Model::forceDerivative(const double* u, const double* du, double* df) {
   duOverlap_.resize(yOverlap_.size());
   layout_->importToOverlap(du, duOverlap_.data(), 3);
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
-  for (const BlockModel& b : blocks_) {
-    const FamilyView view = blockView(b);
-    if (!b.material->forceDerivative(view, yOverlap_.data(), duOverlap_.data(), state_, fOverlap_.data())) return false;
-  }
+  for (const BlockModel& b : blocks_)
+    if (!b.material->forceDerivative(view(b), yOverlap_.data(), duOverlap_.data(), state_, fOverlap_.data())) return false;
   layout_->exportAdd(fOverlap_.data(), df, 3);
   return true;
 }

@@ -22,6 +22,7 @@ struct BlockModel {
   double horizon = 0;
   int begin = 0, end = 0;
   std::shared_ptr<const Material> material;
+  double criticalStretch = 0.0;  // the block's Critical Stretch damage model; 0: no damage model (nothing breaks)
 };
 
 // A displacement, velocity or body-force component imposed on owned nodes: value(x, t), times factor[k]
@@ -66,6 +67,21 @@ class Model {
   // Per bond of the owned nodes: the materials' pair stiffness c_b (see Material::pairStiffness).
   std::vector<double> pairStiffness() const;
   StateStore& state() { return state_; }
+  // Whether some block has a damage model: then the state has "Bond_Damage" (per bond, history: 1 broken,
+  // 0 intact; committed and rolled back with the step), "Broken_Bonds" (per node, history: how many) and
+  // "Damage" (per node, Peridigm's output).
+  bool hasDamage() const { return hasDamage_; }
+
+  // Quasi-static break rounds (solvers/BreakRounds.hpp; docs/input.md, "Damage Models"). Between
+  // beginBreakRounds and endBreakRounds the kernels take their flags from a base set (the committed one at
+  // first) instead of the committed one: setBreaking(false) keeps exactly the base broken (no new break, for
+  // the iterations of a solve), setBreaking(true) adds the bonds stretched past s_c (the check at a converged
+  // state); adoptBreaks makes the last evaluation's trial flags the base and returns how many bonds that added
+  // (collective). No-ops without damage.
+  void beginBreakRounds();
+  void setBreaking(bool on) { breaking_ = on; }
+  double adoptBreaks();
+  void endBreakRounds() { rounds_ = false; }
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions
@@ -92,6 +108,10 @@ class Model {
   std::vector<double> x_, volume_, m_, density_, bound_;
   std::vector<BlockModel> blocks_;
   StateStore state_;
+  bool hasDamage_ = false;
+  bool rounds_ = false, breaking_ = true;      // break rounds: active, new breaks allowed
+  std::vector<double> baseBroken_, baseCount_;  // the base set of the rounds (per bond, per owned node)
+  FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;
   std::vector<char> prescribed_;

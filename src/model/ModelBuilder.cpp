@@ -20,6 +20,7 @@ struct BlockSpec {
   std::string name, materialName;
   double horizon;
   std::shared_ptr<const Material> material;
+  double criticalStretch = 0.0;  // 0: no damage model
 };
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
@@ -34,16 +35,39 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
     }
     return built[name];
   };
+  auto specOf = [&](const BlockGroupSpec& g, int id) {
+    const DamageModelSpec* d = deck.damageModel(g.damageModel);
+    if (d && !materialOf(g.material)->breaksBonds())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model' = '" + g.damageModel + "': material '" +
+                       g.material + "' (" + deck.material(g.material).entry->model +
+                       ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
+                       "Hardening and Microelastic");
+    return BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material),
+                     d ? d->criticalStretch : 0.0};
+  };
   for (const BlockGroupSpec& g : deck.blocks)
-    for (int id : g.blockIds)
-      blocks[id] = BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material)};
+    for (int id : g.blockIds) blocks[id] = specOf(g, id);
   for (const BlockGroupSpec& g : deck.blocks) {
     if (!g.isDefault) continue;
     for (int id : std::set<int>(cloud.block.begin(), cloud.block.end()))
-      if (!blocks.count(id))
-        blocks[id] = BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material)};
+      if (!blocks.count(id)) blocks[id] = specOf(g, id);
   }
   return blocks;
+}
+
+// Peridigm's PdQuickGrid box (QuickGrid.cxx, Spec1D::getCellNeighborhoodSize): n = floor(δ/dx), plus one
+// if the remainder is at least 1/2, at most the cell count; returned as half-widths (n + 1/2) dx, so that
+// lattice offsets k dx with k <= n fall inside with room for round-off.
+std::array<double, 3> quickGridBox(const DiscretizationSpec& d, double horizon) {
+  std::array<double, 3> box{};
+  for (int a = 0; a < 3; ++a) {
+    const double dx = d.length[a] / d.count[a], ratio = horizon / dx;
+    std::size_t n = static_cast<std::size_t>(ratio);
+    if (std::fabs(ratio - static_cast<double>(n)) >= 0.5) n += 1;
+    n = std::min(n, static_cast<std::size_t>(d.count[a]));
+    box[a] = (static_cast<double>(n) + 0.5) * dx;
+  }
+  return box;
 }
 
 // A horizon below the grid spacing reaches no neighbour: every point of the block would have no bond.
@@ -128,8 +152,10 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   }
 
   std::vector<int> owner = partitionRcb(cloud.x, comm);
+  const std::array<double, 3> box = quickGridBox(deck.discretization, horizon.front());  // one block: one horizon
   auto layout = std::make_unique<DistributedLayout>(comm, cloud.x, owner, horizon, cloud.block, cloud.influence,
-                                                    cloud.partialVolume ? &cloud.cell : nullptr);
+                                                    cloud.partialVolume ? &cloud.cell : nullptr,
+                                                    deck.discretization.boxNeighbourhood ? &box : nullptr);
   const std::vector<int>& gids = layout->gids();
   std::vector<double> x(3 * gids.size()), volume(gids.size());
   for (std::size_t i = 0; i < gids.size(); ++i) {
@@ -139,7 +165,8 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   std::vector<BlockModel> blockModels;
   for (const BlockRange& r : layout->blocks()) {
     const BlockSpec& s = blocks.at(r.blockId);
-    blockModels.push_back(BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material});
+    blockModels.push_back(
+        BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch});
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;

@@ -215,6 +215,8 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   if (var == "Element_Id") return model_.layout().gids()[i] + 1;
   if (var == "Proc_Num") return model_.layout().rank();
   if (var == "Number_Of_Neighbors") return model_.numNeighbors(i);
+  // Damage: set by the kernels of blocks with a damage model; 0 where nothing can break (as Peridigm).
+  if (var == "Damage") return model_.state().has("Damage") ? model_.state().committed("Damage")[i] : 0.0;
   if (var == "Volume") return model_.volume()[i];
   if (var == "Horizon")  // the horizon of the node's block
     for (const BlockModel& b : model_.blocks())

@@ -6,6 +6,7 @@
 #include <Epetra_Vector.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
@@ -74,7 +75,7 @@ void setInfluence(BondFamily& family, const std::vector<double>& h, const Influe
 DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector<double>& coords,
                                      const std::vector<int>& owner, const std::vector<double>& horizon,
                                      const std::vector<int>& block, const Influence& influence,
-                                     const std::array<double, 3>* cell)
+                                     const std::array<double, 3>* cell, const std::array<double, 3>* box)
     : comm_(comm) {
   const int me = comm_.rank();
   numGlobal_ = static_cast<int>(owner.size());
@@ -89,7 +90,11 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
     return a < b;
   });
   numOwned_ = static_cast<int>(owned.size());
-  const std::vector<int> candidates = ghostCandidates(coords, owner, me, owned, horizon, cell, key);
+  // Ghosts: a box neighbourhood reaches as far as the ball around the box.
+  std::vector<double> reach = horizon;
+  if (box)
+    for (double& r : reach) r = std::max(r, std::sqrt((*box)[0] * (*box)[0] + (*box)[1] * (*box)[1] + (*box)[2] * (*box)[2]));
+  const std::vector<int> candidates = ghostCandidates(coords, owner, me, owned, reach, cell, key);
 
   std::vector<double> pts;
   pts.reserve(3 * (owned.size() + candidates.size()));
@@ -97,7 +102,7 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
   for (int p : candidates) pts.insert(pts.end(), &coords[3 * p], &coords[3 * p] + 3);
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
-  buildFamilies(pts, numOwned_, h, family_, cell);
+  buildFamilies(pts, numOwned_, h, family_, cell, box);
   // A user-defined influence function can fail (not finite) at some bonds, so on some ranks only.
   collectively(comm_, [&] { setInfluence(family_, h, influence, cell != nullptr); });
 

@@ -22,10 +22,11 @@ class DistributedLayout {
  public:
   // Whole cloud on every rank: coords (3 per point), owner rank, horizon and block id per point; the
   // influence function sets each bond's omega from its length and its owner's horizon. cell: the grid's
-  // cell for partial-volume families (see buildFamilies), or null for whole neighbour volumes.
+  // cell for partial-volume families (see buildFamilies), or null for whole neighbour volumes. box: Peridigm's
+  // PdQuickGrid box neighbourhood (buildFamilies), or null for the spherical one.
   DistributedLayout(const Communicator& comm, const std::vector<double>& coords, const std::vector<int>& owner,
                     const std::vector<double>& horizon, const std::vector<int>& block, const Influence& influence,
-                    const std::array<double, 3>* cell = nullptr);
+                    const std::array<double, 3>* cell = nullptr, const std::array<double, 3>* box = nullptr);
   ~DistributedLayout();
   DistributedLayout(const DistributedLayout&) = delete;
   DistributedLayout& operator=(const DistributedLayout&) = delete;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "BreakRounds.hpp"
 #include "FiniteCheck.hpp"
 #include "LoadStepping.hpp"
 #include "model/Model.hpp"
@@ -116,10 +117,19 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
                  const std::vector<double> uStepStart(u);
                  predictStep(model, t, u, duPrev);
                  // relax's last force evaluation was at the converged u, so the trial state is that of u
-                 const StepResult r = relax(model, u, t, uStepStart, ++step, loadFloor);
+                 // (with damage, the break rounds' last evaluation at u: BreakRounds.hpp)
+                 StepResult r{};
+                 int iterations = 0;
+                 ++step;
+                 solveWithBreakRounds(model, u, [&] {
+                   r = relax(model, u, t, uStepStart, step, loadFloor);
+                   iterations += r.iterations;
+                   return true;
+                 }, t);
                  model.commit();
+                 model.endBreakRounds();
                  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uStepStart[k];
-                 return StepStats{r.iterations, -1, r.residual, r.tolerance, r.load};
+                 return StepStats{iterations, -1, r.residual, r.tolerance, r.load};
                },
                resume);
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "BreakRounds.hpp"
 #include "LoadStepping.hpp"
 #include "model/Model.hpp"
 
@@ -18,11 +19,23 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   const bool root = model.layout().rank() == 0;
   const std::vector<double> uA(u);
   predictStep(model, tB, u, duPrev);
-  Outcome o = newton_.solve(model, u, tB, nullptr, loadFloor);
+  // With damage, Newton solves with the broken set frozen and the breaks are decided at each converged
+  // state (BreakRounds.hpp); without, this is one Newton solve.
+  Outcome o;
+  int iterations = 0, linear = 0;
+  o.converged = solveWithBreakRounds(model, u, [&] {
+    o = newton_.solve(model, u, tB, nullptr, loadFloor);
+    iterations += o.iterations;
+    linear += o.linearIterations;
+    return o.converged;
+  }, tB);
+  o.iterations = iterations;
+  o.linearIterations = linear;
   if (o.converged) {
     std::vector<double> f(model.numDofs());
     model.internalForce(u.data(), f.data());  // the last residual may have been a perturbed one
     model.commit();
+    model.endBreakRounds();
     for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
     return o;
   }
@@ -45,10 +58,15 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
                         tB, depth);
   predictStep(model, tB, u, duPrev);
   AdrSolver adr(opt_.fallback);
-  const AdrSolver::StepResult r = adr.relax(model, u, tB, uA, step_, loadFloor);  // throws SolverFailure if it fails too
+  AdrSolver::StepResult r{};
+  solveWithBreakRounds(model, u, [&] {
+    r = adr.relax(model, u, tB, uA, step_, loadFloor);  // throws SolverFailure if it fails too
+    return true;
+  }, tB);
   std::vector<double> f(model.numDofs());
   model.internalForce(u.data(), f.data());
   model.commit();
+  model.endBreakRounds();
   for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
   return Outcome{true, r.iterations, 0, r.residual, r.tolerance, 0.0, r.load};
 }

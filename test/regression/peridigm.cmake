@@ -14,6 +14,19 @@ foreach(deck Compression_QS_3x2x2 Compression_QS_3x2x2_TextFile ep_cube)
   endforeach()
 endforeach()
 
+# Peridigm's bond-breaking decks (Critical Stretch damage, Verlet; 4 points on PdQuickGrid's default box
+# neighbourhood): the bond breaks at the same step as in Peridigm, after which it carries no force and leaves
+# the dilatation. The -EP twin is Elastic Plastic with Disable Plasticity (its gold file is the Elastic one's).
+foreach(dir BondBreakingInitialVelocity BondBreakingInitialVelocity-EP)
+  set(deck BondBreakingInitialVelocity)
+  foreach(np 1 2)
+    periforge_run(peridigm_${dir}_np${np} ${PERIDIGM_REF}/${dir}/${deck}.xml ${np})
+    periforge_check(peridigm_${dir}_np${np}_vs_gold peridigm_${dir}_np${np}
+      ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_${dir}_np${np}/${deck}.e
+      ${PERIDIGM_REF}/${dir}/${deck}_gold.e ${PERIDIGM_REF}/${dir}/${deck}.comp)
+  endforeach()
+endforeach()
+
 periforge_run(bar_3d_nox_np2 ${REG}/bar/bar_3d_nox.xml 2)
 periforge_check(bar_3d_nox_np2_check bar_3d_nox_np2
   ${PY} ${REG}/bar/check_bar.py ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_nox_np2/bar_3d_nox.csv

@@ -117,8 +117,34 @@ TEST(InputSchema, UnknownSubListNamesItsPath) {
   p->sublist("Solver").sublist("QuasiStatic").sublist("Extra");
   EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "Solver/QuasiStatic: unknown sub-list 'Extra'");
   auto q = base();
-  q->sublist("Damage Models");
-  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "unknown sub-list 'Damage Models'");
+  q->sublist("Contact");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "unknown sub-list 'Contact'");
+}
+
+// Damage Models: parsed once into DamageModelSpecs, named by the blocks; bad input names file and parameter.
+TEST(InputSchema, DamageModels) {
+  auto p = base();
+  Teuchos::ParameterList& d = p->sublist("Damage Models").sublist("Brittle");
+  d.set("Damage Model", std::string("Critical Stretch"));
+  d.set("Critical Stretch", 0.02);
+  p->sublist("Blocks").sublist("My Block").set("Damage Model", std::string("Brittle"));
+  const pf::Deck deck = pf::parseDeck(*p, kFile);
+  ASSERT_EQ(deck.damageModels.size(), 1u);
+  EXPECT_EQ(deck.damageModels[0].criticalStretch, 0.02);
+  EXPECT_EQ(deck.blocks[0].damageModel, "Brittle");
+  EXPECT_EQ(deck.damageModel("Brittle"), &deck.damageModels[0]);
+
+  auto q = deckFromXml(baseDeck());
+  q->sublist("Damage Models").sublist("Brittle").set("Damage Model", std::string("Critical Energy"));
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "Damage Models/Brittle: unknown 'Damage Model' = 'Critical Energy'");
+  auto r = deckFromXml(baseDeck());
+  r->sublist("Damage Models").sublist("Brittle").set("Damage Model", std::string("Critical Stretch"));
+  r->sublist("Damage Models").sublist("Brittle").set("Critical Stretch", -0.1);
+  EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "Damage Models/Brittle: 'Critical Stretch'");
+  auto u = deckFromXml(baseDeck());
+  u->sublist("Blocks").sublist("My Block").set("Damage Model", std::string("Missing"));
+  EXPECT_INPUT_ERROR(pf::parseDeck(*u, kFile), kFile,
+                     "Blocks/My Block: 'Damage Model' = 'Missing' is not defined in Damage Models (defined: none)");
 }
 
 TEST(InputSchema, MissingMaterial) {

@@ -1,4 +1,4 @@
-// Unit tests of "Microelastic" (materials/MicroelasticMaterial: bond-based PMB without breaking) against
+// Unit tests of "Microelastic" (materials/MicroelasticMaterial: bond-based PMB; breaking: test_bond_damage.cpp) against
 // closed forms, in 3D, plane stress and plane strain; the template for a new material's tests:
 //  1. an isotropic stretch of an interior point stores the continuum energy (3D: 9K eps^2/2) with zero
 //     net force, and the micromodulus is the textbook one (3D: 18K/(pi delta^4));

@@ -21,6 +21,26 @@ CASES = [
     ("unknown sub-list",
      [('<ParameterList name="Solver">', '<ParameterList name="Solvr"></ParameterList>\n  <ParameterList name="Solver">')],
      ["Solvr"]),
+    ("unknown damage model",
+     [('<ParameterList name="Blocks">', '<ParameterList name="Damage Models"><ParameterList name="D">'
+       '<Parameter name="Damage Model" type="string" value="Critical Energy"/></ParameterList></ParameterList>\n'
+       '  <ParameterList name="Blocks">')],
+     ["Damage Models/D", "Critical Energy"]),
+    ("block names an undefined damage model",
+     [('<Parameter name="Material" type="string" value="Steel"/>',
+       '<Parameter name="Material" type="string" value="Steel"/><Parameter name="Damage Model" type="string" value="Brittle"/>')],
+     ["Damage Model", "Brittle"]),
+    ("damage model on a material that does not break bonds",
+     [('<ParameterList name="Blocks">', '<ParameterList name="Damage Models"><ParameterList name="Brittle">'
+       '<Parameter name="Damage Model" type="string" value="Critical Stretch"/>'
+       '<Parameter name="Critical Stretch" type="double" value="0.01"/></ParameterList></ParameterList>\n'
+       '  <ParameterList name="Blocks">'),
+      ('<Parameter name="Material" type="string" value="Steel"/>',
+       '<Parameter name="Material" type="string" value="Steel"/><Parameter name="Damage Model" type="string" value="Brittle"/>'),
+      ('<Parameter name="Material Model" type="string" value="Elastic"/>',
+       '<Parameter name="Material Model" type="string" value="Elastic Correspondence"/>'
+       '<Parameter name="Hourglass Coefficient" type="double" value="0.05"/>')],
+     ["Damage Model", "does not break bonds"]),
     ("missing material",
      [('<Parameter name="Material" type="string" value="Steel"/>', '<Parameter name="Material" type="string" value="Stel"/>')],
      ["Stel"]),
