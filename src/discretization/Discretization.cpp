@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "CylinderGenerator.hpp"
 #include "DuplicatePoints.hpp"
 #include "core/InputError.hpp"
 #include "core/Words.hpp"
@@ -189,6 +190,7 @@ PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& i
     case T::TextFile: c = textFile(d, inputFile); break;
     case T::RectangleWithHoles:
     case T::BoxWithHoles: c = generator(d, inputFile); break;
+    case T::Cylinder: c = cylinder(d, inputFile); break;
   }
   c.influence = d.influence;
   c.partialVolume = d.partialVolume;

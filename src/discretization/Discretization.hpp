@@ -1,7 +1,8 @@
 #pragma once
 // Builds the point cloud from a validated DiscretizationSpec: Peridigm's PdQuickGrid and Text File, and
 // Periforge's "Rectangle With Holes" (2D) and "Box With Holes" (3D) generators with optional fictitious
-// boundary layers. Every rank builds the same cloud in the same order; bad mesh files are InputErrors.
+// boundary layers, and "Cylinder" (CylinderGenerator.hpp). Every rank builds the same cloud in the same
+// order; bad mesh files are InputErrors.
 #include <array>
 #include <functional>
 #include <map>

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "CylinderGenerator.hpp"
 #include "Discretization.hpp"
 #include "core/InputError.hpp"
 
@@ -65,6 +66,21 @@ GridShape generatorShape(const DiscretizationSpec& d) {
     g.points += rows * line[0] * line[1] * line[2] / line[a];
     g.extent[a] += rows;
   }
+  return g;
+}
+
+// The cylinder's lattice: its cross-section's points (as the generator makes them) times its layers.
+GridShape cylinderShape(const DiscretizationSpec& d, const std::string& inputFile) {
+  GridShape g;
+  const double across = std::round(2.0 * d.radius / d.spacing), layers = cylinderLayers(d, inputFile);
+  g.cell = {d.spacing, d.spacing, d.spacing};
+  g.extent = {across, across, across};
+  g.extent[d.cylinderAxis] = layers;
+  // Enumerated up to 1024 across (a section of 0.8 million points at most); beyond, the disc's area over dx^2,
+  // so that the guard refuses an absurd deck before the generator would allocate it.
+  const double section = across <= 1024 ? static_cast<double>(cylinderSection(d, inputFile).size())
+                                        : kPi * d.radius * d.radius / (d.spacing * d.spacing);
+  g.points = section * layers;
   return g;
 }
 
@@ -185,7 +201,9 @@ SizeEstimate estimateSize(const Deck& deck) {
   if (d.type == DiscretizationSpec::Type::TextFile) {
     e = meshFileEstimate(deck);
   } else {
-    const GridShape g = d.type == DiscretizationSpec::Type::QuickGrid ? quickGridShape(d) : generatorShape(d);
+    const GridShape g = d.type == DiscretizationSpec::Type::QuickGrid ? quickGridShape(d)
+                        : d.type == DiscretizationSpec::Type::Cylinder ? cylinderShape(d, deck.file)
+                                                                        : generatorShape(d);
     e.points = g.points;
     e.holes = !d.holes.empty();
     e.family = latticeFamily(g.cell, g.extent, deck.maxHorizon(), d.partialVolume);

@@ -21,6 +21,8 @@ bool isNodeSetEntry(const PL& bcs, const std::string& name) {
          s.get<std::string>("Type") == "Node Set Region";
 }
 
+const char* const kRigidWall = "Rigid Wall";
+
 bool allIntegers(const std::vector<std::string>& words) {
   for (const std::string& w : words)
     if (w.empty() || w.find_first_not_of("0123456789+-") != std::string::npos) return false;
@@ -68,9 +70,10 @@ std::vector<ParameterSpec> regionSpecs() {
 
 std::vector<ParameterSpec> conditionSpecs() {
   return {S::text("Type", "`Prescribed Displacement`, `Initial Displacement`, `Initial Velocity`, `Body Force`, "
-                          "`Pressure` (on the surface whose outer layer of points is the node set)")
+                          "`Pressure` (on the surface whose outer layer of points is the node set); `Rigid Wall` "
+                          "has its own parameters (below)")
               .need().oneOf({"Prescribed Displacement", "Initial Displacement", "Initial Velocity", "Body Force",
-                             "Pressure"}),
+                             "Pressure", "Rigid Wall"}),
           S::text("Node Set", "a node-set name (`All`: every node, unless the deck defines its own `All`)").need(),
           S::text("Coordinate", "`x`, `y` or `z`; required, except for `Pressure` (which acts along the surface's "
                                 "normal)").oneOf({"x", "y", "z"}),
@@ -125,6 +128,7 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
     const PL& b = bcs.sublist(bcs.name(it));
     if (!b.isParameter("Type")) fail(file, bpath, "missing required parameter 'Type'");
     if (!b.getEntry("Type").isType<std::string>()) fail(file, bpath, "'Type' must be a string");
+    if (b.get<std::string>("Type") == kRigidWall) continue;  // parseRigidWalls
     const ParameterValues v = readList(b, conditionSpecs(), {}, file, bpath);
     ConditionSpec c;
     c.name = bcs.name(it);

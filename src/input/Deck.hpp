@@ -22,7 +22,7 @@ struct HoleSpec {
 };
 
 struct DiscretizationSpec {
-  enum class Type { QuickGrid, TextFile, RectangleWithHoles, BoxWithHoles };
+  enum class Type { QuickGrid, TextFile, RectangleWithHoles, BoxWithHoles, Cylinder };
   Type type = Type::QuickGrid;
   Influence influence = Influence::One;
   bool partialVolume = false;
@@ -42,6 +42,9 @@ struct DiscretizationSpec {
   std::vector<HoleSpec> holes;
   std::vector<std::string> layers;  // faces with a fictitious layer: "Left", "Right", ...
   double layerWidth = 0.0;          // "Layer Width", or the largest block horizon
+  // Cylinder (spacing above; origin = the centre of the base face).
+  int cylinderAxis = 2;             // 0, 1, 2: x, y, z
+  double radius = 0.0, cylinderLength = 0.0;
 };
 
 struct MaterialSpec {
@@ -86,6 +89,14 @@ struct ConditionSpec {
   int coordinate = 0;                 // 0, 1, 2 (not for Pressure)
   std::shared_ptr<const Expression> value;
   double layerThickness = 0.0;        // Pressure: the surface layer's thickness; 0 = the grid spacing
+};
+
+// A frictionless rigid plane the points of a node set may not cross (Verlet only; model/RigidWall.hpp).
+struct RigidWallSpec {
+  std::string name;                   // the sub-list name; the CSV's Reaction_<name>_X/Y/Z
+  std::string nodeSet = "All";        // the points it stops
+  std::array<double, 3> point{};      // a point of the plane
+  std::array<double, 3> normal{};     // unit normal pointing to the side the body stays on
 };
 
 struct SolverSpec {
@@ -134,6 +145,7 @@ struct Deck {
   std::vector<BlockGroupSpec> blocks;
   std::vector<NodeSetSpec> nodeSets;  // user-defined, in deck order
   std::vector<ConditionSpec> conditions;
+  std::vector<RigidWallSpec> walls;
   std::vector<SolverSpec> solvers;    // run in sequence
   std::vector<OutputSpec> outputs;
   RestartSpec restart;

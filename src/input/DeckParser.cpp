@@ -82,6 +82,7 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
     deck.nodeSets = parseNodeSets(bcs, nodeSets, file, directory);
     for (const NodeSetSpec& s : deck.nodeSets) nodeSets.insert(s.name);
     deck.conditions = parseConditions(bcs, nodeSets, file);
+    deck.walls = parseRigidWalls(bcs, nodeSets, deck.solvers, file);
   }
   deck.outputs = outputs(p, deck, nodeSets);
   if (p.isSublist("Restart")) deck.restart = parseRestart(p.sublist("Restart"), file, deck.outputs);

@@ -9,7 +9,8 @@ namespace pf {
 namespace {
 
 using S = ParameterSpec;
-const std::vector<std::string> kTypes = {"PdQuickGrid", "Text File", "Rectangle With Holes", "Box With Holes"};
+const std::vector<std::string> kTypes = {"PdQuickGrid", "Text File", "Rectangle With Holes", "Box With Holes",
+                                         "Cylinder"};
 
 // "x", "y", "z" or three numbers, not all zero -> a unit vector.
 std::array<double, 3> holeAxis(const std::string& a, const std::string& file, const std::string& path) {
@@ -108,6 +109,16 @@ std::vector<ParameterSpec> discretizationSpecs(const std::string& type) {
                                     "`Right`, `Bottom` (min y), `Top`") + (box ? ", `Back` (min z), `Front`" : "")));
     s.push_back(S::real("Layer Width", "layer width; default: the largest `Horizon` in `Blocks`").positive());
   }
+  if (type == "Cylinder") {
+    for (const char* a : {"X", "Y", "Z"})
+      s.push_back(S::real(std::string(a) + " Center", "centre of the base face (the end at the lowest axis coordinate)")
+                      .byDefault("0"));
+    s.push_back(S::text("Axis", "the cylinder's axis: `x`, `y` or `z` (a lattice direction)").byDefault("z")
+                    .oneOf({"x", "y", "z"}));
+    s.push_back(S::real("Radius", "radius R; the diameter 2R a multiple of `Spacing`").need().positive());
+    s.push_back(S::real("Length", "length along the axis; a multiple of `Spacing`").need().positive());
+    s.push_back(S::real("Spacing", "lattice spacing Δx: 2R/Δx points across the diameter").need().positive());
+  }
   return s;
 }
 
@@ -137,7 +148,7 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
     fail(file, path, "'Type' = '" + type + "' is not one of " + joinNames(kTypes));
   const std::vector<std::string> sublists = type == "PdQuickGrid" ? std::vector<std::string>{"TensorProduct3DMeshGenerator"}
-                                           : type == "Text File"   ? std::vector<std::string>{}
+                                           : type == "Text File" || type == "Cylinder" ? std::vector<std::string>{}
                                                                    : std::vector<std::string>{"Holes"};
   const ParameterValues v = readList(d, discretizationSpecs(type), sublists, file, path);
   DiscretizationSpec s;
@@ -151,6 +162,13 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
       s.length[a] = g.get(std::string(ax[a]) + " Length");
       s.count[a] = static_cast<int>(g.get(std::string("Number Points ") + ax[a]));
     }
+  } else if (type == "Cylinder") {
+    s.type = DiscretizationSpec::Type::Cylinder;
+    s.origin = {v.get("X Center"), v.get("Y Center"), v.get("Z Center")};
+    s.cylinderAxis = v.text("Axis")[0] - 'x';
+    s.radius = v.get("Radius");
+    s.cylinderLength = v.get("Length");
+    s.spacing = v.get("Spacing");
   } else if (type == "Text File") {
     s.type = DiscretizationSpec::Type::TextFile;
     s.meshFile = resolvePath(v.text("Input Mesh File"), dir);

@@ -33,19 +33,22 @@ std::vector<ParameterTable> parameterTables() {
       {"text-file", "Discretization (Type = Text File), besides the common ones", {}},
       {"rectangle", "Discretization (Type = Rectangle With Holes), besides the common ones", {}},
       {"box", "Discretization (Type = Box With Holes), besides the common ones", {}},
+      {"cylinder", "Discretization (Type = Cylinder), besides the common ones", {}},
       {"hole", "Discretization/Holes/<any name> (Rectangle With Holes)", holeSpecs(false)},
       {"hole-box", "Discretization/Holes/<any name> (Box With Holes)", holeSpecs(true)},
       {"blocks", "Blocks/<any name>", blockSpecs()},
       {"damage: Critical Stretch", "Damage Models/<any name> with Damage Model = Critical Stretch", criticalStretchSpecs()},
       {"node-set-region", "Boundary Conditions/<name> with Type = Node Set Region", regionSpecs()},
       {"condition", "Boundary Conditions/<name> (a condition)", conditionSpecs()},
+      {"rigid-wall", "Boundary Conditions/<name> with Type = Rigid Wall", rigidWallSpecs()},
       {"solver", "Solver (or Solver1, Solver2, ...)", solverListSpecs()},
       {"output", "Output (or Output1, Output2, ...)", outputSpecs()},
       {"probe", "Output/Probes/<any name>", probeSpecs()},
       {"restart", "Restart", restartSpecs()}};
   const std::size_t common = discretizationSpecs("").size();
   for (auto& [key, type] : std::vector<std::pair<std::string, std::string>>{
-           {"text-file", "Text File"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"}})
+           {"text-file", "Text File"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"},
+                                             {"cylinder", "Cylinder"}})
     for (ParameterTable& x : t)
       if (x.key == key) {
         const std::vector<ParameterSpec> all = discretizationSpecs(type);

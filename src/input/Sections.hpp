@@ -38,6 +38,11 @@ std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string
                                        const std::string& dir);
 std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::string>& nodeSets,
                                            const std::string& file);
+// Rigid walls: the conditions with Type = Rigid Wall (parseConditions skips them). solvers: every one must
+// be Verlet (the only integrator that enforces them).
+std::vector<ParameterSpec> rigidWallSpecs();
+std::vector<RigidWallSpec> parseRigidWalls(const PL& bcs, const std::set<std::string>& nodeSets,
+                                           const std::vector<SolverSpec>& solvers, const std::string& file);
 
 // Solver lists.
 std::vector<ParameterSpec> solverListSpecs();

@@ -159,6 +159,12 @@ void evaluate(const NodalLoad& load, const std::vector<double>& x, double t, App
 }
 }  // namespace
 
+void Model::enforceRigidWalls(double dt, double* u, double* v) {
+  if (mass_.empty())
+    for (int i = 0; i < numOwned(); ++i) mass_.push_back(density_[i] * volume_[i]);
+  pf::enforceRigidWalls(walls_, x_, mass_, dt, u, v, wallReaction_);
+}
+
 void Model::applyPrescribed(double t, double* u) const {
   if (!clockStarted_) startTime_ = t, clockStarted_ = true;
   time_ = t;

@@ -9,6 +9,7 @@
 #include "parallel/DistributedLayout.hpp"
 #include "core/Material.hpp"
 #include "core/StateStore.hpp"
+#include "model/RigidWall.hpp"
 
 namespace pf {
 
@@ -100,6 +101,17 @@ class Model {
   // when a solver finds its state non-finite; applyPrescribed and bodyForce themselves stay unchecked.
   void requireFiniteLoads(double t) const;
 
+  // Rigid walls (model/RigidWall.hpp): Verlet enforces them after each position update (before the
+  // prescribed displacements, which win on the components they fix).
+  void addRigidWall(RigidWall wall) {
+    walls_.push_back(std::move(wall));
+    wallReaction_.assign(3 * walls_.size(), 0.0);
+  }
+  const std::vector<RigidWall>& rigidWalls() const { return walls_; }
+  void enforceRigidWalls(double dt, double* u, double* v);
+  // 3 per wall: this rank's share of each wall's force on the body in the last enforced step (0 before).
+  const std::vector<double>& wallReactions() const { return wallReaction_; }
+
   double sum(double v) const { return layout_->sum(v); }
   double max(double v) const { return layout_->max(v); }
 
@@ -115,6 +127,8 @@ class Model {
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;
   std::vector<char> prescribed_;
+  std::vector<RigidWall> walls_;
+  std::vector<double> wallReaction_, mass_;
   // The clock applyPrescribed sets (mutable: imposing a time's conditions is what advances it).
   mutable double time_ = 0.0, startTime_ = 0.0;
   mutable bool clockStarted_ = false;

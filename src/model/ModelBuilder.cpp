@@ -120,6 +120,18 @@ void warnPointsWithoutBonds(const Model& model, const std::string& inputFile) {
   warn(inputFile + msg);
 }
 
+// The deck's Rigid Walls on the owned points of their node sets (cloud index -> owned-local: localOf).
+void addRigidWalls(const Deck& deck, Problem& pb, const std::unordered_map<int, int>& localOf) {
+  for (const RigidWallSpec& w : deck.walls) {
+    RigidWall wall{w.name, w.point, w.normal, {}};
+    for (int p : pb.nodeSets.at(w.nodeSet)) {
+      auto it = localOf.find(p);
+      if (it != localOf.end()) wall.nodes.push_back(it->second);
+    }
+    pb.model->addRigidWall(std::move(wall));
+  }
+}
+
 }  // namespace
 
 Problem buildProblem(const Deck& deck, const Communicator& comm) {
@@ -196,6 +208,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
       case ConditionSpec::Kind::InitialVelocity: pb.initialVelocities.push_back(load); break;
     }
   }
+  addRigidWalls(deck, pb, localOf);
   return pb;
 }
 

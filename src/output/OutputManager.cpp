@@ -178,6 +178,8 @@ void OutputManager::openWriters(bool append) {
   };
   for (const Reaction& r : reactions_)
     for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(r.label) + "_" + c);
+  for (const RigidWall& w : model_.rigidWalls())
+    for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(w.name) + "_" + c);
   for (const Probe& p : probes_)
     for (const std::string& var : p.variables) {
       if (contains(kVectors, var))
@@ -259,6 +261,8 @@ std::vector<double> OutputManager::historyRow(const StepReport& report, const st
       for (int i : r.nodes) s -= (f[3 * i + c] + bodyForce_[3 * i + c]) * model_.volume()[i];
       local.push_back(s);
     }
+  // A rigid wall's force on the body in the step just taken (model/RigidWall.hpp).
+  local.insert(local.end(), model_.wallReactions().begin(), model_.wallReactions().end());
   for (const Probe& p : probes_)
     for (const std::string& var : p.variables) {
       const int ncomp = contains(kVectors, var) ? 3 : 1;

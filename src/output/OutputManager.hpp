@@ -2,7 +2,8 @@
 // Observes converged steps and writes what the Output list asks for: one merged Exodus II file (rank 0
 // gathers) every Output Frequency steps, and a CSV history with reactions and probes every output step.
 // Reaction_<Set>_<C> is the force the supports apply to the body on that node set: -sum (f + b) V;
-// "Reaction Names" replaces <Set> by a short name per entry of "Reactions". "Applied Displacement" names
+// "Reaction Names" replaces <Set> by a short name per entry of "Reactions". Then Reaction_<Wall>_<C> per
+// Rigid Wall: its force on the body in the reported step (sum m dv / dt, model/RigidWall.hpp). "Applied Displacement" names
 // a Prescribed Displacement condition whose (space-independent) value at the step's time becomes the
 // column Applied_Displacement, right after time and step.
 //

@@ -1,0 +1,10 @@
+# Taylor impact (issue 17): the coarse bar of examples/taylor_impact (8 points across, 200 m/s, Viscoplastic
+# Correspondence against a Rigid Wall, Verlet) at np = 1 and 2. check_taylor.py states every bound and its
+# reason: L_f/L0 and D_f/D0 against closed-form bands, kinetic energy, wall force and impulse = momentum
+# change, and np 1 against np 2 within round-off.
+foreach(np 1 2)
+  periforge_run(taylor_coarse_np${np} ${PROJECT_SOURCE_DIR}/examples/taylor_impact/taylor_coarse.xml ${np})
+endforeach()
+periforge_check(taylor_coarse_check "taylor_coarse_np1;taylor_coarse_np2"
+  ${PY} ${REG}/taylor/check_taylor.py ${CMAKE_CURRENT_BINARY_DIR}/regression/taylor_coarse_np2
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/taylor_coarse_np1)
