@@ -29,14 +29,18 @@ struct Outcome {
   std::string verb = "failed";
 };
 
-Outcome describe(const std::exception_ptr& error) {
+// deckFile: an input error raised after the deck was read (e.g. a material's, at the first force evaluation)
+// does not know the file; the line names it as every input error does.
+Outcome describe(const std::exception_ptr& error, const std::string& deckFile) {
   const std::string kept = " (the .part output files hold the converged steps)";
   try {
     std::rethrow_exception(error);
   } catch (const Interrupted& e) {
     return {e.what() + kept, 128 + e.signal(), "interrupted"};
   } catch (const InputError& e) {
-    return {std::string("input error: ") + e.what()};
+    const std::string what = e.what();
+    const bool named = what.compare(0, deckFile.size() + 1, deckFile + ":") == 0;
+    return {"input error: " + (named || deckFile.empty() ? what : deckFile + ": " + what)};
   } catch (const SolverFailure& e) {
     return {std::string("solver failed: ") + e.what() + kept};
   } catch (const ConstitutiveFailure& e) {
@@ -136,7 +140,7 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
     solve(deck, solvers, problem, u, v, output, from.get(), checkpointer.get());
     output.finish();
   } catch (...) {
-    const Outcome o = describe(std::current_exception());
+    const Outcome o = describe(std::current_exception(), inputFile);
     output.abandon(o.verb, o.line);
     throw;
   }
@@ -155,7 +159,7 @@ int runSimulation(const std::string& inputFile, const std::string& restartFile) 
   } catch (...) {
     // Every rank reaches the same verdict (input is read by all; rank-local failures are agreed on
     // collectively), so each rank stops on its own; rank 0 alone prints.
-    const Outcome o = describe(std::current_exception());
+    const Outcome o = describe(std::current_exception(), inputFile);
     if (comm.rank() == 0) std::fprintf(stderr, "periforge: %s\n", o.line.c_str());
     return o.code;
   }
