@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include "BreakRounds.hpp"
 #include "FiniteCheck.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
@@ -103,25 +102,6 @@ void ImplicitSolver::check(const Model&) const {
          ": Newmark's scheme is then only conditionally stable (above its step limit the run grows without bound)");
 }
 
-namespace {
-// One Newton solve of the step; with damage the break rounds around it (the broken set frozen in Newton, the
-// breaks decided at the converged state, the step solved again with them: BreakRounds.hpp, as the
-// quasi-static solvers). Iterations summed over the rounds.
-NewtonOutcome solveStep(Model& model, NewtonKrylov& engine, std::vector<double>& u, double t, const Inertia* inertia) {
-  NewtonOutcome o;
-  int iterations = 0, linear = 0;
-  o.converged = solveWithBreakRounds(model, u, [&] {
-    o = engine.solve(model, u, t, inertia);
-    iterations += o.iterations;
-    linear += o.linearIterations;
-    return o.converged;
-  }, t);
-  o.iterations = iterations;
-  o.linearIterations = linear;
-  return o;
-}
-}  // namespace
-
 void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                          const std::vector<double>& times, StepObserver& observer) {
   using Clock = std::chrono::steady_clock;
@@ -174,7 +154,7 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
     nm.predict(u, v, a, inertia.predictor, vTilde);
     u = inertia.predictor;
     model.applyPrescribed(t, u.data());
-    const NewtonOutcome o = solveStep(model, engine, u, t, &inertia);
+    const NewtonOutcome o = engine.solveWithBreaks(model, u, t, &inertia);
     if (!o.converged) {
       model.rollback();
       u = uStart;

@@ -12,6 +12,7 @@
 #include <functional>
 #include <limits>
 
+#include "BreakRounds.hpp"
 #include "LoadStepping.hpp"
 #include "NoxPairPreconditioner.hpp"
 #include "NoxParameters.hpp"
@@ -285,6 +286,21 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
   out.tolerance = force->tolerance();
   out.load = force->last().load;
   return out;
+}
+
+NewtonOutcome NewtonKrylov::solveWithBreaks(Model& model, std::vector<double>& u, double t, const Inertia* inertia,
+                                            double loadFloor) {
+  NewtonOutcome o;
+  int iterations = 0, linear = 0;
+  o.converged = solveWithBreakRounds(model, u, [&] {
+    o = solve(model, u, t, inertia, loadFloor);
+    iterations += o.iterations;
+    linear += o.linearIterations;
+    return o.converged;
+  }, t);
+  o.iterations = iterations;
+  o.linearIterations = linear;
+  return o;
 }
 
 }  // namespace pf

@@ -50,6 +50,10 @@ class NewtonKrylov {
   // test's load scale is never below it (loadScale in LoadStepping.hpp).
   NewtonOutcome solve(Model& model, std::vector<double>& u, double t, const Inertia* inertia = nullptr,
                       double loadFloor = 0.0);
+  // solve() inside the damage break rounds (BreakRounds.hpp: on convergence the caller commits, then calls
+  // model.endBreakRounds()); iterations summed over the rounds. Without damage: one solve().
+  NewtonOutcome solveWithBreaks(Model& model, std::vector<double>& u, double t, const Inertia* inertia = nullptr,
+                                double loadFloor = 0.0);
   const NewtonKrylovOptions& options() const { return opt_; }
 
  private:

@@ -21,16 +21,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   predictStep(model, tB, u, duPrev);
   // With damage, Newton solves with the broken set frozen and the breaks are decided at each converged
   // state (BreakRounds.hpp); without, this is one Newton solve.
-  Outcome o;
-  int iterations = 0, linear = 0;
-  o.converged = solveWithBreakRounds(model, u, [&] {
-    o = newton_.solve(model, u, tB, nullptr, loadFloor);
-    iterations += o.iterations;
-    linear += o.linearIterations;
-    return o.converged;
-  }, tB);
-  o.iterations = iterations;
-  o.linearIterations = linear;
+  Outcome o = newton_.solveWithBreaks(model, u, tB, nullptr, loadFloor);
   if (o.converged) {
     std::vector<double> f(model.numDofs());
     model.internalForce(u.data(), f.data());  // the last residual may have been a perturbed one
