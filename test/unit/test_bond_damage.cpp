@@ -26,6 +26,15 @@
 namespace {
 
 constexpr double kL = 1e-3, kV = 1e-9, kSc = 0.01;
+// The damage fields of a view from the state, as Model wires them outside break rounds.
+void attachDamage(pf::FamilyView& f, pf::StateStore& state) {
+  f.brokenN = state.committed("Bond_Damage");
+  f.broken = state.trial("Bond_Damage");
+  f.damage = state.trial("Damage");
+  f.brokenCountN = state.committed("Broken_Bonds");
+  f.brokenCount = state.trial("Broken_Bonds");
+  f.criticalStretch = kSc;
+}
 
 struct TwoPoints {
   std::vector<int> offsets = {0, 1, 2}, neighbors = {1, 0};
@@ -48,12 +57,7 @@ struct TwoPoints {
     f.begin = 0; f.end = 2; f.offsets = offsets.data(); f.neighbors = neighbors.data(); f.refLength = ref.data();
     f.influence = omega.data(); f.unitInfluence = true; f.x = x.data(); f.volume = V.data();
     f.weightedVolume = m.data(); f.horizon = 1.5 * kL; f.numNodes = 2;
-    f.brokenN = state.committed("Bond_Damage");
-    f.broken = state.trial("Bond_Damage");
-    f.damage = state.trial("Damage");
-    f.brokenCountN = state.committed("Broken_Bonds");
-    f.brokenCount = state.trial("Broken_Bonds");
-    f.criticalStretch = kSc;
+    attachDamage(f, state);
     return f;
   }
   // Force on node 1 (x component) with the bond at stretch s.
@@ -208,12 +212,7 @@ TEST(BondDamage, FlagsFollowTheRuleThroughCommitsAndRollbacks) {
     const double amp = 2e-5 * it;  // up to 1.2e-3 of dx 1e-3: stretches up to about 2 %, s_c = 1 %
     for (int k = 0; k < 3 * L.numNodes; ++k) y[k] = L.x[k] + amp * u(rng);
     pf::FamilyView f = L.view();
-    f.brokenN = state.committed("Bond_Damage");
-    f.broken = state.trial("Bond_Damage");
-    f.damage = state.trial("Damage");
-    f.brokenCountN = state.committed("Broken_Bonds");
-    f.brokenCount = state.trial("Broken_Bonds");
-    f.criticalStretch = kSc;
+    attachDamage(f, state);
     std::fill(F.begin(), F.end(), 0.0);
     mat->computeForce(f, y.data(), state, F.data());
     for (int i = 0; i < L.numNodes; ++i) {
