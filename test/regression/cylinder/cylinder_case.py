@@ -5,8 +5,12 @@ Geometry: bore a = 10 mm, outside b = 20 mm, square lattice dx = 0.5 mm with poi
 of dx (so the x and y axes carry points), delta = 3.015 dx, 1 mm thick. The bore's pressure acts on its
 layer of points a <= r < a + dx (Type = Pressure, Layer Thickness = dx). Symmetry of the exact solution
 holds the points on the axes: u_y = 0 on y = 0, u_x = 0 on x = 0 (rigid-body modes removed)."""
+import csv
 import math
 import os
+import shutil
+import subprocess
+import tempfile
 
 A, B, DX, THICK = 0.010, 0.020, 0.0005, 0.001
 HORIZON = 3.015 * DX
@@ -113,3 +117,21 @@ def write_case(d, material, times, solver_list, pressure_expr):
     with open(path, "w") as f:
         f.write(deck)
     return path
+
+
+def run_case(cmd, material, t0, t1, steps, pressure_expr, edit=lambda text: text):
+    """Runs the case with NOX from t0 to t1 in `steps` load steps in a temporary directory; edit(deck text)
+    may change the deck first. Returns the history rows keyed by time (rounded to 1e-6)."""
+    d = tempfile.mkdtemp(prefix="cylinder")
+    try:
+        nox = (f'<ParameterList name="NOXQuasiStatic"><Parameter name="Number of Load Steps" type="int" '
+               f'value="{steps}"/></ParameterList>')
+        deck = write_case(d, material, [t0, t1], nox, pressure_expr)
+        text = open(deck).read()
+        open(deck, "w").write(edit(text))
+        p = subprocess.run(cmd + [deck], cwd=d, capture_output=True, text=True, timeout=600)
+        if p.returncode != 0:
+            raise SystemExit(f"run failed ({p.returncode}):\n{p.stdout[-2000:]}\n{p.stderr[-2000:]}")
+        return {round(float(r["time"]), 6): r for r in csv.DictReader(open(os.path.join(d, "cylinder.csv")))}
+    finally:
+        shutil.rmtree(d, ignore_errors=True)
