@@ -1,6 +1,6 @@
 # Thick-walled cylinder under internal pressure, plane strain (issue 16): the Pressure condition and the
-# OSB models against Lame's elastic solution, the first-yield pressure and the limit pressure (lower side;
-# the collapse step is scripts/validate_cylinder). Bounds and their reasons: run_cylinder.py.
+# OSB models against Lame's elastic solution, the first-yield pressure and the limit pressure (twice-elastic-slope, polar ring;
+# the 40-ring limit pressure is scripts/validate_cylinder). Bounds and their reasons: run_cylinder.py.
 foreach(np 1 2)
   if(np EQUAL 1)
     set(CYL_CMD ${PERIFORGE_EXE})
