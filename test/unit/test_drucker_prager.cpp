@@ -265,7 +265,7 @@ TEST(DruckerPragerCorrespondence, InputRules) {
   refusedNaming(with("Initial Hardening Parameter", 0.0), "Initial Hardening Parameter");
   refusedNaming(with("Initial Hardening Parameter", 1.2), "Initial Hardening Parameter");
   refusedNaming(with("Hardening Rate", -1.0), "Hardening Rate");
-  refusedNaming(with("Plane Stress", 1.0), "Plane Stress");
+  refusedNaming(with("Plane Stress", 1.0), "Plane Stress");  // not a parameter of the correspondence models
   EXPECT_NO_THROW(pf::makeMaterial("Drucker Prager Correspondence", with("Dilatancy Ratio", 0.0)));
   EXPECT_NO_THROW(pf::makeMaterial("Drucker Prager Correspondence", with("Initial Hardening Parameter", 1.0)));
 }
