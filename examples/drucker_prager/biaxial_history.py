@@ -8,7 +8,8 @@ strain, von Mises, mean stress, PIV at the specimen centre; the paper's Figs 17-
 Equivalent strain as the paper's PIV (Eq. 47): sqrt(1/2 e:e), e the deviator of the small strain sym(F) - I
 with eps_zz = 0 (plane strain).
 
-usage: biaxial_history.py RUN.csv RUN.e [--yield-bound R] [--centre-expect V --centre-bound R]
+usage: biaxial_history.py RUN.csv RUN.e [--confining P] [--yield-bound R] [--centre-expect V --centre-bound R]
+  --confining P       the deck's confining pressure [Pa] for the analytic end value (default 600e3, test 2)
   --yield-bound R     exit 1 unless the centre's yield estimate (where the lines through the last two elastic
                       and the first two plastic steps meet) is within R (relative) of the analytic 0.0011091
                       (make_biaxial.py: p_y / (2 (lambda + G)) per axis, sqrt(1/2 e:e))
@@ -25,7 +26,8 @@ import subprocess
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 YIELD_EQ = 0.0011090795  # analytic yield equivalent strain of the confinement (make_biaxial.py)
-ANALYTIC = 232.59986e3  # make_biaxial.py's uniform end state: sigma_xx = -600 kPa, s_zz = 0, f = 0 (Eq. 38)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from make_biaxial import analytic_end  # noqa: E402  the uniform end state: sigma_xx = -P, s_zz = 0, f = 0 (Eq. 38)
 
 
 def eq_strain(fxx, fyy, fxy, fyx):
@@ -38,6 +40,7 @@ def eq_strain(fxx, fyy, fxy, fyx):
 
 def main(args):
     csv_path, exo_path = args.csv, args.exo
+    ANALYTIC = analytic_end(args.confining)
     rows = list(csv.DictReader(open(csv_path)))
     out = csv_path[:-4] + "_centre.csv"
     yield_eq, last_elastic, hist = None, 0.0, []
@@ -99,6 +102,7 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("csv")
     ap.add_argument("exo")
+    ap.add_argument("--confining", type=float, default=600e3, help="confining pressure [Pa] (test 2: 600e3)")
     ap.add_argument("--yield-bound", type=float)
     ap.add_argument("--centre-expect", type=float)
     ap.add_argument("--centre-bound", type=float, default=0.01)

@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
-"""Writes the biaxial plane-strain compression decks of Li & Geng's Table 2, test 2 (seed 003, Sec. 5.3.1):
-E 30 MPa, nu 0.25, phi 35 deg, c 60 kPa, m0 0.2, h 0, d0 0, confining stress 600 kPa, then axial strain 0.05,
-100 load steps each phase (ADR). Band off (NDO band: issue 18 part 2).
+"""Writes the biaxial plane-strain compression decks of Li & Geng's Table 2, tests 1-4 (seed 003, Sec. 5.3.1):
+E 30 MPa, nu 0.25, phi 35 deg, c 60 kPa, m0 0.2, h 0, d0 0, confining stress 400, 600, 800, 1000 kPa, then
+axial strain 0.05, 100 load steps each phase (ADR). Band off (NDO band: issue 18 part 2). Tests 5-7 (h > 0 or
+d0 = 1) need another phase-1 top law: the closed form below holds for d0 = 0, h = 0 only.
 
-usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}.xml next to this script)
+usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}.xml and biaxial_test{1,3,4}_fine.xml here)
 
 Specimen: nx x ny points of spacing dx (cell centres from dx/2), plane strain. Left and right faces: the
 confining pressure p(t) (Pressure, ramped over t in [0, 100], then held). Bottom row: u_y = 0; its middle
@@ -21,21 +22,33 @@ Backward Euler gives the same piecewise-linear e(p) (fixed return direction, lin
 import math
 import os
 
-E, NU, PHI, C, M0, P = 30e6, 0.25, 35.0, 60e3, 0.2, 600e3
+E, NU, PHI, C, M0 = 30e6, 0.25, 35.0, 60e3, 0.2
+CONFINING = {1: 400e3, 2: 600e3, 3: 800e3, 4: 1000e3}  # Table 2 tests 1-4 (d0 = 0, h = 0)
 K, G = E / (3 * (1 - 2 * NU)), E / (2 * (1 + NU))
 LAM = K - 2 * G / 3
 S = math.sin(math.radians(PHI))
 A = 2 * S / (math.sqrt(3) * (3 - S))
 B = 6 * C * math.cos(math.radians(PHI)) / (math.sqrt(3) * (3 - S))
 PY = M0 * B / (1 / math.sqrt(12) - 2.5 * M0 * A)        # yield pressure of the confinement
-TY = 100 * PY / P                                       # its time
-EL = (P / 100) / (2 * (LAM + G))                        # e per unit t, elastic
-PL_A = 3 * (P / 100) / (6 * K * (1 + math.sqrt(3) * M0 * A))  # e = PL_A t - PL_B, plastic
-PL_B = math.sqrt(3) * M0 * B / (6 * K * (1 + math.sqrt(3) * M0 * A))
-E100 = PL_A * 100 - PL_B
 
 
-def deck(name, dx, nx, ny, tol):
+def top_law(P):
+    """The phase-1 top law for confining pressure P: (t_y, elastic e per t, plastic e = a t - b, e(100))."""
+    ty = 100 * PY / P
+    el = (P / 100) / (2 * (LAM + G))
+    pl_a = 3 * (P / 100) / (6 * K * (1 + math.sqrt(3) * M0 * A))
+    pl_b = math.sqrt(3) * M0 * B / (6 * K * (1 + math.sqrt(3) * M0 * A))
+    return ty, el, pl_a, pl_b, pl_a * 100 - pl_b
+
+
+def analytic_end(P):
+    """End-of-loading von Mises stress: sigma_xx = -P, s_zz = 0, f = 0 (Eq. 38) -> sigma_yy, J."""
+    q = (P / 2 + M0 * (1.5 * A * P + B)) / (0.5 - 1.5 * M0 * A)
+    return math.sqrt(3) * (q - P) / 2
+
+
+def deck(name, dx, nx, ny, tol, P=600e3, test=2):
+    TY, EL, PL_A, PL_B, E100 = top_law(P)
     W, H = nx * dx, ny * dx
     L = (ny - 1) * dx                                    # top row to bottom row
     top = (f"if (t &lt;= {TY:.10g}) {{ value = -{L:.10g}*{EL:.10g}*t; }} "
@@ -51,11 +64,11 @@ def deck(name, dx, nx, ny, tol):
     face = lambda n, f: (f'    <ParameterList name="{n}"><Parameter name="Type" type="string" value="Node Set Region"/>'
                          f'<Parameter name="Face" type="string" value="{f}"/></ParameterList>\n')
     return f"""<ParameterList>
-  <!-- Written by make_biaxial.py (edit that, not this). Li & Geng (seed 003) Table 2, test 2: biaxial
+  <!-- Written by make_biaxial.py (edit that, not this). Li & Geng (seed 003) Table 2, test {test}: biaxial
        plane-strain compression, {W * 1e3:g} x {H * 1e3:g} mm, dx = {dx * 1e3:g} mm, delta = 3 dx; confining pressure
-       600 kPa on the left and right faces over t = 0..100, then axial strain 0.05 at the top over t = 100..200;
+       {P / 1e3:g} kPa on the left and right faces over t = 0..100, then axial strain 0.05 at the top over t = 100..200;
        the top follows the uniform confinement solution in phase 1 (see make_biaxial.py). No NDO band (the
-       boundary rows show the surface effect). Analytic end state: von Mises 232.6 kPa everywhere. -->
+       boundary rows show the surface effect). Analytic end state: von Mises {analytic_end(P) / 1e3:.1f} kPa everywhere. -->
   <ParameterList name="Discretization">
     <Parameter name="Type" type="string" value="Rectangle With Holes"/>
     <Parameter name="Spacing" type="double" value="{dx:.10g}"/>
@@ -127,7 +140,10 @@ def deck(name, dx, nx, ny, tol):
 
 if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
-    print(f"A {A:.6g}  B {B:.6g} Pa  yield pressure {PY:.6g} Pa at t = {TY:.6g}  e(100) = {E100:.6g}")
-    for name, dx, nx, ny, tol in (("biaxial_test2_coarse", 5e-3, 11, 21, 1e-6), ("biaxial_test2_fine", 2.5e-3, 21, 41, 1e-6)):
+    print(f"A {A:.6g}  B {B:.6g} Pa  yield pressure {PY:.6g} Pa")
+    decks = [("biaxial_test2_coarse", 5e-3, 11, 21, 2), ("biaxial_test2_fine", 2.5e-3, 21, 41, 2)]
+    decks += [(f"biaxial_test{n}_fine", 2.5e-3, 21, 41, n) for n in (1, 3, 4)]
+    for name, dx, nx, ny, n in decks:
+        print(f"{name}: confining {CONFINING[n] / 1e3:g} kPa, analytic end von Mises {analytic_end(CONFINING[n]) / 1e3:.2f} kPa")
         with open(os.path.join(here, name + ".xml"), "w") as f:
-            f.write(deck(name, dx, nx, ny, tol))
+            f.write(deck(name, dx, nx, ny, 1e-6, CONFINING[n], n))
