@@ -8,6 +8,7 @@
 //  2. before yield the stress is Hooke's law exactly; yield starts at the analytic strain;
 //  3. a 90 degree rotation superposed during plastic flow changes no scalar output (1e-10);
 //  4. the cubic of Eq. A15 with B4 corrected vanishes at the update's dlambda (the printed B4 does not);
+//     phi = 0 is von Mises with the yield stress 2 c m;
 //  5. input rules: one error line naming the parameter for each bad value; no plane stress.
 #include <gtest/gtest.h>
 
@@ -240,6 +241,26 @@ TEST(DruckerPragerCorrespondence, CubicOfA15WithCorrectedB4) {
   EXPECT_LT(std::fabs(sum), 1e-10 * big);
   const double a13 = 1 - kM0 + h * xiN, printedB4 = b[3] - a13 * a13 * J + a13 * J;
   EXPECT_GT(std::fabs(sum - b[3] + printedB4), 1e-3 * big);
+}
+
+// 4b. phi = 0 makes A = 0: a pressure-independent cone (a von Mises cylinder) with yield J = m B, B = 2c/sqrt(3),
+//     i.e. von Mises stress 2 c m. Perfectly plastic (h = 0) pure shear after confinement ends on that value
+//     exactly (round-off of the return, 1e-12), whatever d0 (no apex, no dilatancy: A d0 = 0); m0 = 1 is
+//     admitted and keeps m = 1.
+TEST(DruckerPragerCorrespondence, ZeroFrictionIsVonMisesWithYield2cm) {
+  for (double m0 : {0.2, 1.0}) {
+    auto v = values(0.0, 0.7, false);
+    v["Friction Angle"] = 0.0, v["Initial Hardening Parameter"] = m0;
+    auto mat = pf::makeMaterial("Drucker Prager Correspondence", v);
+    pf::MaterialPoint mp(*mat, 1e-3, 3.0);
+    for (int k = 1; k <= 200; ++k) {
+      mp.deform(diag(stretches(Path::ConfineShear, false, k, 100))), mp.evaluate();
+      if (k < 200) mp.commit();
+    }
+    EXPECT_GT(mp.value("Equivalent_Plastic_Strain"), 0.01);
+    EXPECT_NEAR(mp.value("Von_Mises_Stress"), 2 * kC * m0, 1e-12 * kC) << "m0 " << m0;
+    EXPECT_EQ(mp.value("Hardening_Parameter"), m0);
+  }
 }
 
 // 5. Bad values: one line naming the parameter. Dilatancy Ratio 0 is accepted (Table 2, tests 1-6).
