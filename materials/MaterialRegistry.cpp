@@ -2,6 +2,7 @@
 // core/MaterialEntry.hpp. Adding a model = one file pair in materials/ plus one line here.
 #include "core/MaterialEntry.hpp"
 
+#include "DruckerPragerCorrespondenceMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
@@ -19,6 +20,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       MicroelasticMaterial::entry(),
       ElasticCorrespondenceMaterial::entry(),
       ViscoplasticCorrespondenceMaterial::entry(),
+      DruckerPragerCorrespondenceMaterial::entry(),
   };
   return entries;
 }

@@ -38,6 +38,7 @@ ParameterSpec ParameterSpec::nonNegative() const { ParameterSpec s = *this; s.mi
 ParameterSpec ParameterSpec::atLeast(double v) const { ParameterSpec s = *this; s.min = v; s.minExclusive = false; return s; }
 ParameterSpec ParameterSpec::above(double v) const { ParameterSpec s = *this; s.min = v; s.minExclusive = true; return s; }
 ParameterSpec ParameterSpec::below(double v) const { ParameterSpec s = *this; s.max = v; s.maxExclusive = true; return s; }
+ParameterSpec ParameterSpec::atMost(double v) const { ParameterSpec s = *this; s.max = v; s.maxExclusive = false; return s; }
 ParameterSpec ParameterSpec::oneOf(std::vector<std::string> v) const { ParameterSpec s = *this; s.choices = std::move(v); return s; }
 
 std::string ParameterSpec::rangeText() const {

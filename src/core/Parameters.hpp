@@ -34,6 +34,7 @@ struct ParameterSpec {
   ParameterSpec atLeast(double v) const;               // >= v
   ParameterSpec above(double v) const;                 // > v
   ParameterSpec below(double v) const;                 // < v
+  ParameterSpec atMost(double v) const;                // <= v
   ParameterSpec oneOf(std::vector<std::string> values) const;
 
   bool hasRange() const { return min > -std::numeric_limits<double>::infinity() || max < std::numeric_limits<double>::infinity(); }

@@ -26,6 +26,10 @@ TEST(ParameterSpec, RangesAcceptTheirBoundsAndRefuseWhatIsOutside) {
   EXPECT_EQ(half.rangeError(0.0), "");
   EXPECT_EQ(half.rangeError(0.5), "must be in [0, 0.5) (got 0.5)");
   EXPECT_EQ(half.rangeText(), "in [0, 0.5)");
+  const S unit = S::real("d").positive().atMost(1.0);  // atMost: the upper bound is admissible
+  EXPECT_EQ(unit.rangeError(1.0), "");
+  EXPECT_EQ(unit.rangeError(1.5), "must be in (0, 1] (got 1.5)");
+  EXPECT_EQ(S::real("x").atMost(2.0).rangeText(), "<= 2");
   EXPECT_EQ(S::real("x").rangeText(), "");
   EXPECT_FALSE(S::real("x").hasRange());
 }

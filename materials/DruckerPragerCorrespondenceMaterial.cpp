@@ -1,0 +1,57 @@
+#include "DruckerPragerCorrespondenceMaterial.hpp"
+
+namespace pf {
+
+DruckerPragerCorrespondenceMaterial::DruckerPragerCorrespondenceMaterial(const MaterialInput& in)
+    : CorrespondenceMaterial(in, "Drucker Prager Correspondence"),
+      law_(druckerPragerLaw(in.get("Friction Angle"), in.get("Cohesion"), in.get("Initial Hardening Parameter"),
+                            in.get("Hardening Rate"), in.get("Dilatancy Ratio"))) {}
+
+MaterialEntry DruckerPragerCorrespondenceMaterial::entry() {
+  using P = ParameterSpec;
+  std::vector<ParameterSpec> params = commonParameters();
+  params.push_back(P::real("Friction Angle", "internal friction angle phi [degrees] of A, B (Li & Geng Eq. 38)")
+                       .need().nonNegative().below(90.0));
+  params.push_back(P::real("Cohesion", "c of B (Eq. 38) [Pa]").need().nonNegative());
+  params.push_back(P::real("Initial Hardening Parameter", "m0 of Eq. A14: initial yield at J = m0 (A I + B)")
+                       .need().positive().atMost(1.0));
+  params.push_back(P::real("Hardening Rate", "h of Eq. A14 (0: perfectly plastic)").need().nonNegative());
+  // [0, 1], not (0, 1]: the paper's Table 2 tests 1-6 use d0 = 0 (plastic flow without volume change).
+  params.push_back(P::real("Dilatancy Ratio", "d0 of the potential g (Eq. 38); 1: associated flow, 0: no dilatancy")
+                       .need().nonNegative().atMost(1.0));
+  std::vector<std::string> outputs = commonOutputs();
+  outputs.push_back("Mean_Stress");
+  outputs.push_back("Equivalent_Plastic_Strain");
+  outputs.push_back("Hardening_Parameter");
+  return {"Drucker Prager Correspondence",
+          "Drucker-Prager correspondence solid, hyperbolic hardening, non-associated flow (Li & Geng, Eqs. 38-48, "
+          "A1-A18) with hourglass control",
+          params,
+          [](const MaterialInput& in) { return std::unique_ptr<Material>(new DruckerPragerCorrespondenceMaterial(in)); },
+          outputs};
+}
+
+std::vector<StateSpec> DruckerPragerCorrespondenceMaterial::modelStateSpecs() const {
+  // Equivalent_Plastic_Strain is the paper's PIV xi (Eq. 47, A13), the history; m and the mean stress
+  // follow from it and the stress, written for output only. Hardening_Parameter starts at m0.
+  return {{"Equivalent_Plastic_Strain", Location::Node, true, true},
+          {"Hardening_Parameter", Location::Node, false, true, law_.m0},
+          {"Mean_Stress", Location::Node, false, true}};
+}
+
+void DruckerPragerCorrespondenceMaterial::updateStress(const FamilyView& fam, StateStore& state,
+                                                       const std::vector<Mat3>& tauN, const std::vector<Mat3>& de,
+                                                       std::vector<Mat3>& tau) const {
+  const double* xiN = state.committed("Equivalent_Plastic_Strain");
+  double* xi = state.trial("Equivalent_Plastic_Strain");
+  double* m = state.trial("Hardening_Parameter");
+  double* mean = state.trial("Mean_Stress");
+  for (std::size_t k = 0; k < tau.size(); ++k) {
+    const int i = fam.begin + static_cast<int>(k);
+    const DruckerPragerStep s = druckerPragerUpdate(law_, moduli().bulk, moduli().shear, tauN[k], xiN[i], de[k]);
+    tau[k] = s.tau, xi[i] = s.xi, m[i] = s.m;
+    mean[i] = trace(s.tau) / 3.0;  // tension positive, as the stress components
+  }
+}
+
+}  // namespace pf
