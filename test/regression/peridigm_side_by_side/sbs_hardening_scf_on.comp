@@ -3,7 +3,7 @@
 # Dilatation 1.25e-2, Weighted_Volume 7.1e-13, Lambda 9.1e-25). Measured (README.md): at most 1.2e-10 of the
 # largest value, from the shear correction factor, which both codes compute from a pure shear of gamma = 1e-6
 # (Peridigm's construction): its deviatoric extension is a difference of two bond lengths that agree to 1e-6,
-# so it carries 1e-16/1e-6 = 1e-10 relative rounding that depends on the order of operations. 1e-8 leaves a
+# so the last-bit differences of the two codes' grid coordinates (<= 8.7e-19 m) become 1e-16/1e-6 = 1e-10. 1e-8 leaves a
 # margin of 80 over that; a wrong model (a missed yield, the Discrete normalisation, 1/s for s) moves these
 # fields by 1e-3 or more of their largest value.
 COORDINATES absolute 1.0E-12
