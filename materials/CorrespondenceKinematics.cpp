@@ -178,4 +178,41 @@ void addHourglassForce(const FamilyView& fam, int i, const double* y, const Mat3
   }
 }
 
+namespace {
+
+// The hourglass force state of one bond (per V_i V_j), as addHourglassForce computes it.
+void hourglassBond(const double* Y, const double* xi, const Mat3& F, double c, double refLength, double* T) {
+  const double len2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
+  T[0] = T[1] = T[2] = 0.0;
+  if (len2 == 0.0) return;
+  double dot = 0.0;
+  for (int a = 0; a < 3; ++a) dot += (Y[a] - (F[3 * a] * xi[0] + F[3 * a + 1] * xi[1] + F[3 * a + 2] * xi[2])) * Y[a];
+  const double mag = c * dot / (refLength * len2);
+  for (int a = 0; a < 3; ++a) T[a] = mag * Y[a];
+}
+
+}  // namespace
+
+double hourglassWork(const FamilyView& fam, int i, const double* yN, const Mat3& FN, const double* y, const Mat3& F,
+                     double c) {
+  if (c == 0.0) return 0.0;
+  const double* xi0 = fam.x + 3 * i;
+  double w = 0.0;
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    const double frac = fam.fraction ? fam.fraction[b] : 1.0;
+    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
+    double Y[3], YN[3], T[3], TN[3];
+    for (int a = 0; a < 3; ++a) Y[a] = y[3 * j + a] - y[3 * i + a], YN[a] = yN[3 * j + a] - yN[3 * i + a];
+    hourglassBond(Y, xi, F, c, fam.refLength[b], T);
+    hourglassBond(YN, xi, FN, c, fam.refLength[b], TN);
+    // The force on i is +T V_j, on j -T V_i: the work the body does against them is -(their power), i.e.
+    // the bond takes (T . (dY)) V_i V_j with T pulling i towards j when the bond is stretched beyond F xi.
+    double dw = 0.0;
+    for (int a = 0; a < 3; ++a) dw += 0.5 * (T[a] + TN[a]) * (Y[a] - YN[a]);
+    w += dw * fam.volume[j] * frac;
+  }
+  return w * fam.volume[i];
+}
+
 }  // namespace pf

@@ -43,4 +43,11 @@ void addCorrespondenceForce(const FamilyView& fam, int i, const Mat3& A, double*
 // modulus (CorrespondenceMaterial). Zero for every affine motion.
 void addHourglassForce(const FamilyView& fam, int i, const double* y, const Mat3& F, double c, double* force);
 
+// The work the hourglass forces of owned node i's bonds take from the body over a step from the deformed
+// positions yN (gradient FN) to y (gradient F), by the trapezoid rule: sum (T_n + T) . (Y - Y_n) V_i V_j.
+// The force has no potential (F moves with the family, Y/|Y| turns), so its energy is this accumulated work,
+// not a spring energy of the current state (docs/materials.md, "Energy").
+double hourglassWork(const FamilyView& fam, int i, const double* yN, const Mat3& FN, const double* y, const Mat3& F,
+                     double c);
+
 }  // namespace pf

@@ -84,6 +84,8 @@ std::vector<std::string> CorrespondenceMaterial::commonOutputs() {
   for (const char* c : kSym) out.push_back(std::string("Unrotated_Cauchy_Stress") + c);
   out.push_back("Von_Mises_Stress");
   for (const char* c : kFull) out.push_back(std::string("Deformation_Gradient") + c);
+  out.push_back("Stored_Elastic_Energy");
+  out.push_back("Dissipated_Energy");
   return out;
 }
 
@@ -94,6 +96,9 @@ std::vector<StateSpec> CorrespondenceMaterial::stateSpecs() const {
   addTensorSpecs(s, "Rotation_Tensor", false, false, true);
   addTensorSpecs(s, "Left_Stretch_Tensor", false, false, true);
   s.push_back({"Von_Mises_Stress", Location::Node, false, true});
+  s.push_back({"Stored_Elastic_Energy", Location::Node, false, true});
+  s.push_back({"Dissipated_Energy", Location::Node, true, true});
+  s.push_back({"Hourglass_Work", Location::Node, true, false});  // part of Stored_Elastic_Energy
   for (const StateSpec& m : modelStateSpecs()) s.push_back(m);
   return s;
 }
@@ -106,6 +111,26 @@ double CorrespondenceMaterial::micromodulus(double horizon) const {
 }
 
 double CorrespondenceMaterial::hourglassConstant(double horizon) const { return hourglass_ * micromodulus(horizon); }
+
+void CorrespondenceMaterial::enableOutput(const std::string& name) const {
+  if (name == "Stored_Elastic_Energy") storedWanted_ = true;
+  if (name == "Dissipated_Energy") dissipatedWanted_ = true;
+}
+
+// 1/2 tau : C^-1 : tau = p^2 / (2 K) + s : s / (4 mu), p = tr(tau)/3, s = dev(tau).
+double CorrespondenceMaterial::elasticEnergyDensity(const Mat3& tau) const {
+  const double p = trace(tau) / 3.0;
+  const Mat3 s = deviator(tau);
+  return p * p / (2.0 * moduli_.bulk) + ddot(s, s) / (4.0 * moduli_.shear);
+}
+
+// C^-1 : dtau = tr(dtau)/(9 K) I + dev(dtau)/(2 mu), the inverse of elasticIncrement.
+Mat3 CorrespondenceMaterial::elasticStrain(const Mat3& dtau) const {
+  Mat3 e = (1.0 / (2.0 * moduli_.shear)) * deviator(dtau);
+  const double v = trace(dtau) / (9.0 * moduli_.bulk);
+  e[0] += v, e[4] += v, e[8] += v;
+  return e;
+}
 
 Mat3 CorrespondenceMaterial::elasticIncrement(const Mat3& de) const {
   Mat3 s = (2.0 * moduli_.shear) * deviator(de);
@@ -122,23 +147,45 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   double* vm = state.trial("Von_Mises_Stress");
   const int n = fam.end - fam.begin;
   std::vector<Mat3> Kinv(n), F(n), R(n), tauN(n), de(n), tau(n);
+  std::vector<double> Jn(dissipatedWanted_ ? n : 0);
   // Phase 1: kinematics of every owned node, from its own family.
   for (int k = 0; k < n; ++k) {
     const int i = fam.begin + k;
     const ShapeAndGradient sg = shapeAndGradient(fam, i, y, planar);
     const PolarUpdate pu = flanaganTaylor(Fs.committedAt(i), sg.F, Rs.committedAt(i), Vs.committedAt(i));
     Kinv[k] = sg.Kinv, F[k] = sg.F, R[k] = pu.R, de[k] = pu.dUnrot, tauN[k] = taus.committedAt(i);
+    if (dissipatedWanted_) Jn[k] = det(Fs.committedAt(i));
     Fs.set(i, sg.F), Rs.set(i, pu.R), Vs.set(i, pu.V);
   }
   // Phase 2: the model's stress update; phase 3: stress to force state, plus the hourglass force.
   updateStress(fam, state, tauN, de, tau);
   const double c = hourglassConstant(fam.horizon);
+  // Energies per node (J; docs/materials.md, "Energy"). Foster et al. (2010)'s Eqs. 49-52 are rate forms of
+  // Cauchy stress: the stress power per reference volume is J sigma : D = J tau : d (Eq. 18's unrotated d).
+  // Stored: J V (1/2 tau : C^-1 : tau) plus the work taken by the hourglass bonds (history, trapezoid rule).
+  // Dissipated: the plastic work, per step by the midpoint rule, J_mid V tau_mid : (de - C^-1 : (tau - tau_n)),
+  // zero for an elastic step.
+  double* stored = storedWanted_ ? state.trial("Stored_Elastic_Energy") : nullptr;
+  double* hgWork = storedWanted_ ? state.trial("Hourglass_Work") : nullptr;
+  const double* hgWorkN = storedWanted_ ? state.committed("Hourglass_Work") : nullptr;
+  double* dissipated = dissipatedWanted_ ? state.trial("Dissipated_Energy") : nullptr;
+  const double* dissipatedN = dissipatedWanted_ ? state.committed("Dissipated_Energy") : nullptr;
   for (int k = 0; k < n; ++k) {
     const int i = fam.begin + k;
     taus.set(i, tau[k]);
     vm[i] = vonMises(tau[k]);
     addCorrespondenceForce(fam, i, mul(piolaFromUnrotated(F[k], R[k], tau[k]), Kinv[k]), force);
     addHourglassForce(fam, i, y, F[k], c, force);
+    if (stored) {
+      // No committed positions yet (the run's first evaluation): no step, no work.
+      hgWork[i] = hgWorkN[i] + (fam.yN ? hourglassWork(fam, i, fam.yN, Fs.committedAt(i), y, F[k], c) : 0.0);
+      stored[i] = det(F[k]) * fam.volume[i] * elasticEnergyDensity(tau[k]) + hgWork[i];
+    }
+    if (dissipated) {
+      const Mat3 dp = de[k] - elasticStrain(tau[k] - tauN[k]);
+      const double Jmid = 0.5 * (Jn[k] + det(F[k]));
+      dissipated[i] = dissipatedN[i] + Jmid * fam.volume[i] * ddot(0.5 * (tau[k] + tauN[k]), dp);
+    }
   }
 }
 

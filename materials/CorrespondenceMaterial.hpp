@@ -22,6 +22,8 @@ class CorrespondenceMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
+  void enableOutput(const std::string& name) const override;
+  bool wantsCommittedPositions() const override { return storedWanted_; }  // the hourglass work
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 
@@ -35,7 +37,8 @@ class CorrespondenceMaterial : public Material {
   // The parameters every correspondence model takes (the model's own ones are appended by the caller).
   static std::vector<ParameterSpec> commonParameters();
   // Output names of the base fields: Unrotated_Cauchy_Stress{XX,YY,ZZ,XY,YZ,XZ}, Von_Mises_Stress,
-  // Deformation_Gradient{XX,...,ZZ}.
+  // Deformation_Gradient{XX,...,ZZ}, Stored_Elastic_Energy, Dissipated_Energy (J per node, computed only when
+  // an output asks for them: Global_Strain_Energy, Global_Dissipated_Energy; docs/materials.md, "Energy").
   static std::vector<std::string> commonOutputs();
 
  protected:
@@ -49,12 +52,22 @@ class CorrespondenceMaterial : public Material {
   // Hooke's law on an increment: lambda tr(de) I + 2 mu de = K tr(de) I + 2 mu dev(de).
   Mat3 elasticIncrement(const Mat3& de) const;
 
+  // The energy hooks, for a model whose elastic part is not the isotropic Hooke law of these moduli (the
+  // defaults are right for every model that uses elasticIncrement): the stored elastic energy per unit
+  // (current) volume of the unrotated stress tau, 1/2 tau : C^-1 : tau, and the elastic strain of a stress
+  // increment, C^-1 : dtau. The plastic work increment per volume is then tau_mid : (de - C^-1 : dtau).
+  virtual double elasticEnergyDensity(const Mat3& tau) const;
+  virtual Mat3 elasticStrain(const Mat3& dtau) const;
+
  private:
   ElasticModuli moduli_;
   double thickness_ = 0.0;  // before dim_: its initialiser writes it
   Dimension dim_;
   double density_;
   double hourglass_;  // Hourglass Coefficient
+  // Set by enableOutput before the run (blocks share the material): the energy fields cost a little per node
+  // and bond, so only runs that ask for them pay; they never change a force.
+  mutable bool storedWanted_ = false, dissipatedWanted_ = false;
 };
 
 }  // namespace pf

@@ -214,6 +214,7 @@ RestartPoint applyCheckpoint(const std::string& file, const CheckpointData& data
       throw InputError("restart: '" + file + "': " + e.what());
     }
   });
+  model.setCommittedDisplacement(u.data());  // collective: the committed positions, as an uninterrupted run has them
   return at;
 }
 

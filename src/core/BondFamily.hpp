@@ -50,6 +50,10 @@ struct FamilyView {
   // the reference state (the run's first such time). Rate-independent models ignore both; a rate-dependent
   // one keeps its own committed time as node history (docs/extending.md, "Time").
   double time = 0.0, startTime = 0.0;
+  // Deformed positions of the last committed state, 3 per overlap node, for a model that integrates a work
+  // over the step (an energy output); null unless the model asks (Material::wantsCommittedPositions) and
+  // a state has been committed. Never needed for a force.
+  const double* yN = nullptr;
 };
 
 inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,

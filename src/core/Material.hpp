@@ -54,6 +54,9 @@ class Material {
   // model can skip work for fields nobody reads (e.g. an energy pass). Default: every field is always
   // computed. const because blocks share the material; the flag it sets must not change results.
   virtual void enableOutput(const std::string& name) const {}
+  // Whether computeForce wants FamilyView::yN (the committed deformed positions): the core then keeps a
+  // copy of the overlap positions per commit. Default no; asked on each evaluation and commit.
+  virtual bool wantsCommittedPositions() const { return false; }
 
   // Whether computeForce honours FamilyView's bond damage (core/BondDamage.hpp). A block with a damage model
   // and a material that does not is refused at input, so no deck silently runs without its breaks.

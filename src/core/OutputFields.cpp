@@ -15,8 +15,16 @@ const std::vector<std::string>& coreScalarFields() {
 }
 
 const std::vector<std::string>& globalFields() {
-  static const std::vector<std::string> v = {"Global_Kinetic_Energy"};
+  static const std::vector<std::string> v = {"Global_Kinetic_Energy", "Global_Strain_Energy", "Global_Dissipated_Energy",
+                                             "Global_Wall_Energy_Loss"};
   return v;
+}
+
+const char* globalSourceField(const std::string& global) {
+  if (global == "Global_Strain_Energy") return "Stored_Elastic_Energy";
+  if (global == "Global_Dissipated_Energy") return "Dissipated_Energy";
+  if (global == "Global_Wall_Energy_Loss") return "Rigid_Wall_Energy_Loss";
+  return nullptr;
 }
 
 }  // namespace pf

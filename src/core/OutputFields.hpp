@@ -8,6 +8,14 @@ namespace pf {
 
 const std::vector<std::string>& coreVectorFields();  // 3 components per node: "Displacement", ...
 const std::vector<std::string>& coreScalarFields();  // one value per node: "Volume", "Horizon", ...
-const std::vector<std::string>& globalFields();      // one value per step: "Global_Kinetic_Energy"
+const std::vector<std::string>& globalFields();      // one value per step: "Global_Kinetic_Energy", ...
+
+// The per-node energy (J per node, not a density) a whole-body global sums over the owned nodes, or null for
+// Global_Kinetic_Energy (computed from v). The node field is declared by whoever computes it, so the output
+// layer never knows which material or boundary condition sits behind a global:
+//   Global_Strain_Energy     = sum Stored_Elastic_Energy   (Peridigm's names; every block's material declares it)
+//   Global_Dissipated_Energy = sum Dissipated_Energy       (plastic work; every block's material declares it)
+//   Global_Wall_Energy_Loss  = sum Rigid_Wall_Energy_Loss  (the model's Rigid Walls: kinetic energy removed)
+const char* globalSourceField(const std::string& global);
 
 }  // namespace pf

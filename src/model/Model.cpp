@@ -98,12 +98,31 @@ void Model::internalForce(const double* u, double* f) {
     for (const BlockModel& b : blocks_) b.material->computeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
   });
   layout_->exportAdd(fOverlap_.data(), f, 3);
+  if (wantsPositions()) yEvaluated_ = yOverlap_;
+}
+
+bool Model::wantsPositions() const {
+  for (const BlockModel& b : blocks_)
+    if (b.material->wantsCommittedPositions()) return true;
+  return false;
+}
+
+void Model::commit() {
+  state_.commit();
+  if (wantsPositions() && !yEvaluated_.empty()) yCommitted_ = yEvaluated_;
+}
+
+void Model::setCommittedDisplacement(const double* u) {
+  layout_->importToOverlap(u, uOverlap_.data(), 3);
+  yCommitted_.resize(x_.size());
+  for (std::size_t k = 0; k < yCommitted_.size(); ++k) yCommitted_[k] = x_[k] + uOverlap_[k];
 }
 
 FamilyView Model::blockView(const BlockModel& b) const {
   FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
   view.time = time_;
   view.startTime = startTime_;
+  if (!yCommitted_.empty()) view.yN = yCommitted_.data();
   return view;
 }
 
@@ -159,10 +178,23 @@ void evaluate(const NodalLoad& load, const std::vector<double>& x, double t, App
 }
 }  // namespace
 
-void Model::enforceRigidWalls(double dt, double* u, double* v) {
+void Model::addRigidWall(RigidWall wall) {
+  if (walls_.empty())
+    state_.allocate({{"Rigid_Wall_Energy_Loss", Location::Node, true, false}}, numOwned(), layout_->family().numBonds());
+  walls_.push_back(std::move(wall));
+  wallReaction_.assign(3 * walls_.size(), 0.0);
+}
+
+void Model::enforceRigidWalls(double dt, double* u, double* v, const double* a) {
   if (mass_.empty())
     for (int i = 0; i < numOwned(); ++i) mass_.push_back(density_[i] * volume_[i]);
-  pf::enforceRigidWalls(walls_, x_, mass_, dt, u, v, wallReaction_);
+  // A history field's trial copy is stale after a commit (StateStore::commit): rewrite it from the committed
+  // one on every wall node; the other nodes are 0 in both copies.
+  double* loss = state_.trial("Rigid_Wall_Energy_Loss");
+  const double* lossN = state_.committed("Rigid_Wall_Energy_Loss");
+  for (const RigidWall& w : walls_)
+    for (int i : w.nodes) loss[i] = lossN[i];
+  pf::enforceRigidWalls(walls_, x_, mass_, dt, u, v, wallReaction_, a, loss);
 }
 
 void Model::applyPrescribed(double t, double* u) const {

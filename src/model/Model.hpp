@@ -56,7 +56,8 @@ class Model {
   // df = (d f / d u) du at u, exactly, if every material has an exact tangent (returns false otherwise).
   bool forceDerivative(const double* u, const double* du, double* df);
   bool hasExactTangent() const;
-  void commit() { state_.commit(); }
+  // commit() also keeps the evaluated positions as FamilyView::yN when a material wants them.
+  void commit();
   void rollback() { state_.rollback(); }
 
   const std::vector<double>& density() const { return density_; }         // per owned node
@@ -103,12 +104,14 @@ class Model {
 
   // Rigid walls (model/RigidWall.hpp): Verlet enforces them after each position update (before the
   // prescribed displacements, which win on the components they fix).
-  void addRigidWall(RigidWall wall) {
-    walls_.push_back(std::move(wall));
-    wallReaction_.assign(3 * walls_.size(), 0.0);
-  }
+  // The first wall adds the node history field Rigid_Wall_Energy_Loss (J per node: the kinetic energy the
+  // walls have removed from it so far; Global_Wall_Energy_Loss sums it), so that checkpoints carry it.
+  void addRigidWall(RigidWall wall);
   const std::vector<RigidWall>& rigidWalls() const { return walls_; }
-  void enforceRigidWalls(double dt, double* u, double* v);
+  // a: the acceleration of the step's first half kick (3 per owned node), for the walls' energy loss.
+  void enforceRigidWalls(double dt, double* u, double* v, const double* a);
+  // A restart: u (3 per owned node) is the committed state (FamilyView::yN of the next evaluation). Collective.
+  void setCommittedDisplacement(const double* u);
   // 3 per wall: this rank's share of each wall's force on the body in the last enforced step (0 before).
   const std::vector<double>& wallReactions() const { return wallReaction_; }
 
@@ -125,6 +128,8 @@ class Model {
   std::vector<double> baseBroken_, baseCount_;  // the base set of the rounds (per bond, per owned node)
   FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
+  std::vector<double> yEvaluated_, yCommitted_;  // positions of the last internalForce and of the last commit
+  bool wantsPositions() const;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;
   std::vector<char> prescribed_;
   std::vector<RigidWall> walls_;

@@ -45,6 +45,7 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   last_ = out.lastStep;
   for (const std::string& var : out.variables) {
     if (contains(kGlobals, var)) {
+      requireGlobal(var, out.listName + "/Output Variables");
       globals_.push_back(var);
       continue;
     }
@@ -84,6 +85,27 @@ void OutputManager::requireComputed(const std::string& var, const std::string& w
     return;
   }
   throw InputError(inputFile_ + ": " + where + ": '" + var + "' is not computed by any material of this run");
+}
+
+// A global summed from a node field (core/OutputFields.hpp) needs that field on every node that can carry it:
+// a material field from every block's material (a block without it would drop out of the sum silently).
+void OutputManager::requireGlobal(const std::string& var, const std::string& where) const {
+  const char* field = globalSourceField(var);
+  if (!field) return;
+  const std::string f = field;
+  if (f == "Rigid_Wall_Energy_Loss") {
+    if (model_.rigidWalls().empty())
+      throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs a Rigid Wall boundary condition");
+    return;
+  }
+  for (const BlockModel& b : model_.blocks()) {
+    bool declared = false;
+    for (const StateSpec& s : b.material->stateSpecs()) declared = declared || (s.name == f && s.where == Location::Node);
+    if (!declared)
+      throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs '" + f + "' from every material, and material '" +
+                       b.materialName + "' (" + b.name + ") does not compute it");
+  }
+  for (const BlockModel& b : model_.blocks()) b.material->enableOutput(f);
 }
 
 // Nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one; -1 if none
@@ -278,11 +300,16 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
                                     const std::vector<double>& f) {
   std::map<std::string, double> globals;
   for (const std::string& var : globals_) {
-    double ke = 0.0;  // Global_Kinetic_Energy = sum 1/2 rho V |v|^2
-    for (int i = 0; i < model_.numOwned(); ++i)
-      ke += 0.5 * model_.density()[i] * model_.volume()[i] *
-            (v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
-    globals[var] = model_.sum(ke);
+    double e = 0.0;
+    if (const char* field = globalSourceField(var)) {  // a node field of energies per node, summed
+      const double* per = model_.state().committed(field);
+      for (int i = 0; i < model_.numOwned(); ++i) e += per[i];
+    } else {  // Global_Kinetic_Energy = sum 1/2 rho V |v|^2
+      for (int i = 0; i < model_.numOwned(); ++i)
+        e += 0.5 * model_.density()[i] * model_.volume()[i] *
+             (v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
+    }
+    globals[var] = model_.sum(e);
   }
   std::map<std::string, std::vector<double>> vectors, scalars, none;
   for (const std::string& var : nodalVectors_) {

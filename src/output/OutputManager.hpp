@@ -64,6 +64,7 @@ class OutputManager : public StepObserver {
     std::vector<int> nodes;  // owned-local
   };
   void requireComputed(const std::string& var, const std::string& where) const;
+  void requireGlobal(const std::string& var, const std::string& where) const;
   Probe locateProbe(const ProbeSpec& p, const std::string& listName) const;
   int nearestPoint(const double* at, double* d2) const;
   double spacingAt(int q) const;

@@ -139,7 +139,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
       v[k] += 0.5 * dt * a[k];
       u[k] += dt * v[k];
     }
-    if (!model.rigidWalls().empty()) model.enforceRigidWalls(dt, u.data(), v.data());
+    if (!model.rigidWalls().empty()) model.enforceRigidWalls(dt, u.data(), v.data(), a.data());
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) / dt;

@@ -158,6 +158,32 @@ TEST(ElasticCorrespondence, SmallStrainIsHooke) {
   }
 }
 
+// 3a. Energy outputs (docs/materials.md, "Energy"): after one small affine step the stored energy of the
+//     centre is J V (1/2) H : C : H, written here from Hooke's law (lambda, mu), not from the model's compliance;
+//     no plastic work. Tolerance 4e-6 relative: the stress is Hooke's to 2e-6 (SmallStrainIsHooke: the
+//     midpoint rate and J of |H| = 1e-6), and the energy is quadratic in it. Dissipated: 1e-12 of the stored
+//     energy (round-off of tau : (de - C^-1 : dtau) with de = C^-1 : dtau).
+TEST(ElasticCorrespondence, StoredEnergyIsHookesAndNothingIsDissipated) {
+  const double lambda = kE * kNu / ((1 + kNu) * (1 - 2 * kNu)), mu = kE / (2 * (1 + kNu));
+  for (Dimension dim : {Dimension::ThreeD, Dimension::PlaneStrain}) {
+    SCOPED_TRACE(pf::toString(dim));
+    const bool planar = dim != Dimension::ThreeD;
+    const Mat3 H = {1e-6, 0.4e-6, planar ? 0 : -0.2e-6, 0.4e-6, -0.5e-6, planar ? 0 : 0.3e-6,
+                    planar ? 0 : -0.2e-6, planar ? 0 : 0.3e-6, planar ? 0 : 0.7e-6};
+    auto mat = elastic(dim);
+    mat->enableOutput("Stored_Elastic_Energy");
+    mat->enableOutput("Dissipated_Energy");
+    pf::MaterialPoint mp(*mat, kDx, 3.0, kH, true);
+    mp.deform(arr(pf::identity3() + H));
+    mp.evaluate();
+    const Mat3 eps = pf::sym(H);
+    const double w = lambda * pf::trace(eps) * pf::trace(eps) / 2 + mu * pf::ddot(eps, eps);
+    const double expected = pf::det(pf::identity3() + H) * mp.nodeVolume() * w;
+    EXPECT_NEAR(mp.value("Stored_Elastic_Energy"), expected, 4e-6 * expected);
+    EXPECT_NEAR(mp.value("Dissipated_Energy"), 0.0, 1e-12 * expected);
+  }
+}
+
 // 3b. A whole lattice (13^3, delta = 3 dx) under an affine motion: every point has the same F and stress,
 //     and the interior point's neighbours have complete, point-symmetric families, so the net force on it
 //     is zero, hourglass force included. Tolerance: 1e-12 of the sum of |bond force| on it (round-off of

@@ -72,6 +72,28 @@ TEST(RigidWall, SeparatingPointBehindThePlaneKeepsItsVelocity) {
   EXPECT_EQ(reaction[2], 0.0);
 }
 
+// The wall's energy loss (RigidWall.hpp): a point arriving freely (a = 0) loses its normal kinetic energy
+// m v_n^2 / 2 (the tangential part stays); a point resting on the wall, kicked into it by a constant
+// acceleration a each Verlet step (v_n = dt a, gap = dt^2 a), loses nothing, since nothing moves. Both are
+// exact identities of the formula's few operations on these values (1e-12 relative for round-off).
+TEST(RigidWall, EnergyLossIsTheImpactsAndZeroForAPointResting) {
+  std::vector<pf::RigidWall> walls = {pf::RigidWall{"W", {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}, {0}}};
+  std::vector<double> x = {0.0, 0.0, 0.0}, mass = {2.0}, reaction;
+  const double dt = 1e-3;
+  {
+    std::vector<double> u = {0.0, 0.0, -30.0 * dt}, v = {5.0, 0.0, -30.0}, a = {0.0, 0.0, 0.0}, loss = {0.0};
+    pf::enforceRigidWalls(walls, x, mass, dt, u.data(), v.data(), reaction, a.data(), loss.data());
+    EXPECT_NEAR(loss[0], 0.5 * 2.0 * 30.0 * 30.0, 1e-12 * 900.0);
+  }
+  {
+    const double acc = -4.0e3;  // pushed into the wall by the body behind it
+    std::vector<double> u = {0.0, 0.0, dt * dt * acc}, v = {0.0, 0.0, dt * acc}, a = {0.0, 0.0, acc}, loss = {0.0};
+    pf::enforceRigidWalls(walls, x, mass, dt, u.data(), v.data(), reaction, a.data(), loss.data());
+    EXPECT_NEAR(loss[0], 0.0, 1e-12 * 0.5 * 2.0 * (dt * acc) * (dt * acc));
+    EXPECT_EQ(v[2], 0.0);
+  }
+}
+
 namespace {
 
 std::string deckWith(const std::string& wall, const std::string& solver) {
