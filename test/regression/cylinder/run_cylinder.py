@@ -79,7 +79,11 @@ def tes_pressure(ps, us):
 def continuum_curve(ts, r_probe):
     """The 1D J2 finite-element reference (radial_j2.py, no hardening) at p = t p_L: u at r_probe."""
     m = radial_j2.RadialJ2(C.A, C.B, C.E, C.NU, C.SIGMA_Y)
-    return [float(np.interp(r_probe, m.r, (m.solve(t * C.limit_pressure()), m.u)[1])) for t in ts]
+    u = []
+    for t in ts:  # in order: each solve starts from the state the previous one committed
+        m.solve(t * C.limit_pressure())
+        u.append(float(np.interp(r_probe, m.r, m.u)))
+    return u
 
 
 def limit(cmd, failures, rings):
