@@ -23,6 +23,7 @@ MaterialEntry DruckerPragerCorrespondenceMaterial::entry() {
   outputs.push_back("Mean_Stress");
   outputs.push_back("Equivalent_Plastic_Strain");
   outputs.push_back("Hardening_Parameter");
+  outputs.push_back("Yield_Function");
   return {"Drucker Prager Correspondence",
           "Drucker-Prager correspondence solid, hyperbolic hardening, non-associated flow (Li & Geng, Eqs. 38-48, "
           "A1-A18) with hourglass control",
@@ -36,7 +37,11 @@ std::vector<StateSpec> DruckerPragerCorrespondenceMaterial::modelStateSpecs() co
   // follow from it and the stress, written for output only. Hardening_Parameter starts at m0.
   return {{"Equivalent_Plastic_Strain", Location::Node, true, true},
           {"Hardening_Parameter", Location::Node, false, true, law_.m0},
-          {"Mean_Stress", Location::Node, false, true}};
+          {"Mean_Stress", Location::Node, false, true},
+          // druckerPragerYieldRatio of the evaluated state. History only so that the committed copy (what output
+          // writes) is the value of the committed evaluation, not of the core's re-evaluation after the commit
+          // (which would return-map a loading-balance round's points held elastic within its tolerance).
+          {"Yield_Function", Location::Node, true, true}};
 }
 
 void DruckerPragerCorrespondenceMaterial::updateStress(const FamilyView& fam, StateStore& state,
@@ -46,11 +51,17 @@ void DruckerPragerCorrespondenceMaterial::updateStress(const FamilyView& fam, St
   double* xi = state.trial("Equivalent_Plastic_Strain");
   double* m = state.trial("Hardening_Parameter");
   double* mean = state.trial("Mean_Stress");
+  double* yield = state.trial("Yield_Function");
   for (std::size_t k = 0; k < tau.size(); ++k) {
     const int i = fam.begin + static_cast<int>(k);
-    const DruckerPragerStep s = druckerPragerUpdate(law_, moduli().bulk, moduli().shear, tauN[k], xiN[i], de[k]);
-    tau[k] = s.tau, xi[i] = s.xi, m[i] = s.m;
-    mean[i] = trace(s.tau) / 3.0;  // tension positive, as the stress components
+    if (fam.admitted && !fam.admitted[i]) {  // a loading-balance round holds this point elastic (Material.hpp)
+      tau[k] = tauN[k] + elasticIncrement(de[k]), xi[i] = xiN[i], m[i] = druckerPragerHardening(law_, xiN[i]);
+    } else {
+      const DruckerPragerStep s = druckerPragerUpdate(law_, moduli().bulk, moduli().shear, tauN[k], xiN[i], de[k]);
+      tau[k] = s.tau, xi[i] = s.xi, m[i] = s.m;
+    }
+    mean[i] = trace(tau[k]) / 3.0;  // tension positive, as the stress components
+    yield[i] = druckerPragerYieldRatio(law_, tau[k], m[i]);
   }
 }
 

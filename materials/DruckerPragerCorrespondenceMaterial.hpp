@@ -14,6 +14,9 @@ class DruckerPragerCorrespondenceMaterial : public CorrespondenceMaterial {
   explicit DruckerPragerCorrespondenceMaterial(const MaterialInput& in);
   static MaterialEntry entry();
   const DruckerPragerLaw& law() const { return law_; }
+  // Loading-balance correction: a point not admitted keeps the elastic trial (xi unchanged); Yield_Function is
+  // druckerPragerYieldRatio of the evaluated stress and m.
+  bool supportsYieldRounds() const override { return true; }
 
  protected:
   void updateStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& tauN,

@@ -33,6 +33,14 @@ void druckerPragerCubic(const DruckerPragerLaw& law, double K, double G, double 
   b[3] = a13 * a13 * jTrial - A * a11 * b13 - k * a11 * a13;
 }
 
+double druckerPragerYieldRatio(const DruckerPragerLaw& law, const Mat3& tau, double m) {
+  const Mat3 s = deviator(tau);
+  const double i1 = -trace(tau), j = std::sqrt(0.5 * ddot(s, s));  // compression positive I (sign convention above)
+  const double scale = m * (law.A * std::fabs(i1) + law.B);
+  if (!(scale > 0.0)) return j > 0.0 ? 1.0 : 0.0;
+  return (j - m * (law.A * i1 + law.B)) / scale;
+}
+
 DruckerPragerStep druckerPragerUpdate(const DruckerPragerLaw& law, double K, double G, const Mat3& tauN, double xiN,
                                       const Mat3& de) {
   // Elastic predictor, Eqs. A1-A3, in the paper's compression-positive I and s.

@@ -43,6 +43,12 @@ struct DruckerPragerStep {
   int iterations;    // of the scalar solve (0: elastic or apex)
 };
 
+// The yield function f = J - m (A I + B) of the stress tau (tension positive) at hardening m, divided by the
+// yield surface's J at the same pressure magnitude, m (A |I| + B): dimensionless, J / J_yield - 1 under
+// compression, 0 on the surface, > 0 outside (the "Yield_Function" output and the loading-balance
+// correction's test). Where that scale is 0 (B = 0 and I = 0) it is 1 for J > 0 and 0 for J = 0.
+double druckerPragerYieldRatio(const DruckerPragerLaw& law, const Mat3& tau, double m);
+
 // One step from the committed tauN, xiN with the unrotated strain increment de, bulk modulus K, shear
 // modulus G. Elastic when f(trial, m_n) <= 0 (Eq. 41); else the cone return: the consistency condition
 //   J_tr - G dl - m(dl) (A (I_tr + 9 K A d0 m(dl) dl) + B) = 0,  m(dl) = m(xiN + dl/2)   (Eqs. A9, A10, A13, A14)

@@ -4,7 +4,7 @@ E 30 MPa, nu 0.25, phi 35 deg, c 60 kPa, m0 0.2, h 0, d0 0, confining stress 400
 axial strain 0.05, 100 load steps each phase (ADR). Band off (NDO band: issue 18 part 2). Tests 5-7 (h > 0 or
 d0 = 1) need another phase-1 top law: the closed form below holds for d0 = 0, h = 0 only.
 
-usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}.xml and biaxial_test{1,3,4}_fine.xml here)
+usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}{,_lbc}.xml and biaxial_test{1,3,4}_fine.xml here)
 
 Specimen: nx x ny points of spacing dx (cell centres from dx/2), plane strain. Left and right faces: the
 confining pressure p(t) (Pressure, ramped over t in [0, 100], then held). Bottom row: u_y = 0; its middle
@@ -47,7 +47,7 @@ def analytic_end(P):
     return math.sqrt(3) * (q - P) / 2
 
 
-def deck(name, dx, nx, ny, tol, P=600e3, test=2):
+def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False):
     TY, EL, PL_A, PL_B, E100 = top_law(P)
     W, H = nx * dx, ny * dx
     L = (ny - 1) * dx                                    # top row to bottom row
@@ -56,6 +56,7 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2):
            f"else {{ value = -{L:.10g}*({E100:.10g} + 0.05*(t - 100)/100); }}")
     pres = f"if (t &lt;= 100) {{ value = {P / 100:.10g}*t; }} else {{ value = {P:.10g}; }}"
     cx, cy = W / 2, H / 2
+    lbc_line = ('\n      <Parameter name="Loading Balance Correction" type="bool" value="true"/>' if lbc else "")
     bc = lambda n, t, ns, extra: (f'    <ParameterList name="{n}"><Parameter name="Type" type="string" value="{t}"/>\n'
                                   f'      <Parameter name="Node Set" type="string" value="{ns}"/>{extra}</ParameterList>\n')
     coord = lambda c, v: (f'<Parameter name="Coordinate" type="string" value="{c}"/>\n'
@@ -109,7 +110,7 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2):
     <Parameter name="Final Time" type="double" value="200.0"/>
     <ParameterList name="Adaptive Dynamic Relaxation">
       <Parameter name="Number of Load Steps" type="int" value="200"/>
-      <Parameter name="Relative Tolerance" type="double" value="{tol:g}"/>
+      <Parameter name="Relative Tolerance" type="double" value="{tol:g}"/>{lbc_line}
     </ParameterList>
   </ParameterList>
   <ParameterList name="Output">
@@ -125,6 +126,7 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2):
       <Parameter name="Unrotated_Cauchy_StressXX" type="bool" value="true"/>
       <Parameter name="Unrotated_Cauchy_StressYY" type="bool" value="true"/>
       <Parameter name="Unrotated_Cauchy_StressZZ" type="bool" value="true"/>
+      <Parameter name="Yield_Function" type="bool" value="true"/>
     </ParameterList>
     <ParameterList name="Probes">
       <ParameterList name="Centre">
@@ -141,9 +143,11 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2):
 if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
     print(f"A {A:.6g}  B {B:.6g} Pa  yield pressure {PY:.6g} Pa")
-    decks = [("biaxial_test2_coarse", 5e-3, 11, 21, 2), ("biaxial_test2_fine", 2.5e-3, 21, 41, 2)]
-    decks += [(f"biaxial_test{n}_fine", 2.5e-3, 21, 41, n) for n in (1, 3, 4)]
-    for name, dx, nx, ny, n in decks:
+    decks = [("biaxial_test2_coarse", 5e-3, 11, 21, 2, False), ("biaxial_test2_fine", 2.5e-3, 21, 41, 2, False)]
+    decks += [(f"biaxial_test{n}_fine", 2.5e-3, 21, 41, n, False) for n in (1, 3, 4)]
+    # Test 2 with the loading-balance correction (ADR "Loading Balance Correction"; README, lbc_check.py).
+    decks += [("biaxial_test2_coarse_lbc", 5e-3, 11, 21, 2, True), ("biaxial_test2_fine_lbc", 2.5e-3, 21, 41, 2, True)]
+    for name, dx, nx, ny, n, lbc in decks:
         print(f"{name}: confining {CONFINING[n] / 1e3:g} kPa, analytic end von Mises {analytic_end(CONFINING[n]) / 1e3:.2f} kPa")
         with open(os.path.join(here, name + ".xml"), "w") as f:
-            f.write(deck(name, dx, nx, ny, 1e-6, CONFINING[n], n))
+            f.write(deck(name, dx, nx, ny, 1e-6, CONFINING[n], n, lbc))

@@ -54,6 +54,10 @@ struct FamilyView {
   // over the step (an energy output); null unless the model asks (Material::wantsCommittedPositions) and
   // a state has been committed. Never needed for a force.
   const double* yN = nullptr;
+  // Loading-balance correction (solvers/YieldRounds.hpp): per owned node, 1 if the point may return-map in this
+  // evaluation, 0 if it must respond elastically even past its yield surface; null: every point may (normal
+  // runs). Only models with Material::supportsYieldRounds() read it.
+  const char* admitted = nullptr;
 };
 
 inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,

@@ -62,6 +62,13 @@ class Material {
   // and a material that does not is refused at input, so no deck silently runs without its breaks.
   virtual bool breaksBonds() const { return false; }
 
+  // Loading-balance correction (Li & Geng, seed 003, Sec. 4.1; solvers/YieldRounds.hpp). True: computeForce
+  // honours FamilyView::admitted (a point flagged 0 takes the elastic trial state) and writes, on every
+  // evaluation, the node field "Yield_Function": the yield function of the evaluated state made dimensionless
+  // by the model (docs/materials.md), > 0 exactly where the point lies outside its elastic domain. A solver
+  // option that needs it is refused for a block whose material returns false.
+  virtual bool supportsYieldRounds() const { return false; }
+
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;
 };

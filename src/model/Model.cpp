@@ -62,6 +62,7 @@ FamilyView Model::view(const BlockModel& b) {
     // Frozen: no stretch exceeds infinity, so exactly the base set is broken.
     v.criticalStretch = rounds_ && !breaking_ ? HUGE_VAL : b.criticalStretch;
   }
+  if (yieldRounds_) v.admitted = admitted_.data();  // else null: every point may yield
   return v;
 }
 

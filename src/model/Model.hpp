@@ -84,6 +84,19 @@ class Model {
   void setBreaking(bool on) { breaking_ = on; }
   double adoptBreaks();
   void endBreakRounds() { rounds_ = false; }
+
+  // Loading-balance correction (solvers/YieldRounds.hpp; Li & Geng, seed 003, Sec. 4.1; model/YieldRounds.cpp).
+  // Between beginYieldRounds and endYieldRounds only admitted points may return-map (FamilyView::admitted); the
+  // set starts empty: every point elastic, as the paper's balance module starts each load step. admitYielding(tol)
+  // admits the owned points whose last evaluation left Yield_Function > tol outside the set and returns how many
+  // (collective). countYielding(tol): points with Yield_Function > tol in the trial state (collective; 0 when no
+  // material writes the field). yieldRoundsRefusal(): empty if every block's material supports the rounds
+  // (Material::supportsYieldRounds), else "block 'NAME': material 'M'" of the first that does not.
+  std::string yieldRoundsRefusal() const;
+  void beginYieldRounds();
+  double admitYielding(double tol);
+  void endYieldRounds() { yieldRounds_ = false; }
+  double countYielding(double tol);
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions
@@ -126,6 +139,8 @@ class Model {
   bool hasDamage_ = false;
   bool rounds_ = false, breaking_ = true;      // break rounds: active, new breaks allowed
   std::vector<double> baseBroken_, baseCount_;  // the base set of the rounds (per bond, per owned node)
+  bool yieldRounds_ = false;                    // loading-balance rounds active
+  std::vector<char> admitted_;                  // their admitted plastic set (per owned node)
   FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::vector<double> yEvaluated_, yCommitted_;  // positions of the last internalForce and of the last commit

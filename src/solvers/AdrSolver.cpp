@@ -6,6 +6,8 @@
 #include "BreakRounds.hpp"
 #include "FiniteCheck.hpp"
 #include "LoadStepping.hpp"
+#include "YieldRounds.hpp"
+#include "core/InputError.hpp"
 #include "model/Model.hpp"
 
 namespace pf {
@@ -22,7 +24,11 @@ SolverEntry AdrSolver::entry() {
       S::real("Absolute Tolerance", "residual force-density norm that also ends a step (default: none)").positive(),
       S::integer("Maximum Iterations", "per load step; then the run fails").byDefault("100000").atLeast(1),
       S::real("Safety Factor", "multiplies the fictitious density").byDefault("1").positive(),
-      S::flag("Verbose", "print the residual history of every step").byDefault("false")};
+      S::flag("Verbose", "print the residual history of every step").byDefault("false"),
+      S::flag("Loading Balance Correction",
+              "Li & Geng's loading-balance correction: relax with the step's admitted plastic set frozen (empty at "
+              "the start: all elastic), admit the points past their yield surface, relax again until none is; "
+              "then commit (materials that support it: Drucker Prager Correspondence)").byDefault("false")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     AdrOptions o;
     o.relativeTolerance = p.get("Relative Tolerance");
@@ -30,6 +36,8 @@ SolverEntry AdrSolver::entry() {
     o.maxIterations = static_cast<int>(p.get("Maximum Iterations"));
     o.safetyFactor = p.get("Safety Factor");
     o.verbose = p.flag("Verbose");
+    o.loadBalance = p.flag("Loading Balance Correction");
+    o.where = p.where();
     return std::unique_ptr<Solver>(new AdrSolver(o));
   };
   return e;
@@ -108,6 +116,15 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
   return {it, nr.residual, tol, nr.load};
 }
 
+void AdrSolver::check(const Model& model) const {
+  if (!opt_.loadBalance) return;
+  const std::string refusal = model.yieldRoundsRefusal();
+  if (!refusal.empty())
+    throw InputError(opt_.where + ": 'Loading Balance Correction' = true: " + refusal +
+                     " does not support it (it needs a model that can hold a point elastic: Drucker Prager "
+                     "Correspondence)");
+}
+
 void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                     StepObserver& observer) {
   const SolverResume* resume = takeResume();
@@ -118,18 +135,26 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
                  predictStep(model, t, u, duPrev);
                  // relax's last force evaluation was at the converged u, so the trial state is that of u
                  // (with damage, the break rounds' last evaluation at u: BreakRounds.hpp)
+                 // (and with the loading-balance correction, the last round's: YieldRounds.hpp)
                  StepResult r{};
-                 int iterations = 0;
+                 int iterations = 0, rounds = 0;
                  ++step;
-                 solveWithBreakRounds(model, u, [&] {
+                 auto relaxOnce = [&] {
                    r = relax(model, u, t, uStepStart, step, loadFloor);
                    iterations += r.iterations;
+                 };
+                 solveWithBreakRounds(model, u, [&] {
+                   if (opt_.loadBalance) rounds += solveWithYieldRounds(model, relaxOnce, t);
+                   else relaxOnce();
                    return true;
                  }, t);
                  model.commit();
                  model.endBreakRounds();
+                 model.endYieldRounds();
                  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uStepStart[k];
-                 return StepStats{iterations, -1, r.residual, r.tolerance, r.load};
+                 StepStats s{iterations, -1, r.residual, r.tolerance, r.load};
+                 s.rounds = opt_.loadBalance ? rounds : -1;
+                 return s;
                },
                resume);
 }

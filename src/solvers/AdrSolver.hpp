@@ -4,6 +4,8 @@
 // and a damping coefficient from the local Rayleigh quotient. A load step converges when the residual
 // (force, free dofs) is below Relative Tolerance x the load scale (reaction + body force) or below the
 // Absolute Tolerance; after Maximum Iterations it fails with SolverFailure.
+#include <string>
+
 #include "Solver.hpp"
 #include "core/SolverEntry.hpp"
 
@@ -15,6 +17,8 @@ struct AdrOptions {
   int maxIterations = 100000;
   double safetyFactor = 1.0;        // multiplies the fictitious density
   bool verbose = false;             // print the residual history of every step
+  bool loadBalance = false;         // Li & Geng's loading-balance correction (YieldRounds.hpp)
+  std::string where;                // the deck list, for input errors ("input.xml: Solver/Adaptive Dynamic Relaxation")
 };
 
 class AdrSolver : public Solver {
@@ -24,6 +28,8 @@ class AdrSolver : public Solver {
   std::string name() const override { return "Adaptive Dynamic Relaxation"; }
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
+  // Loading Balance Correction needs every block's material to support it (Material::supportsYieldRounds).
+  void check(const Model& model) const override;
 
   // Relaxes u (prescribed values at t already set, free ones predicted) to equilibrium at time t.
   // uStepStart: the converged state the step started from (the damping estimate works on u - uStepStart).

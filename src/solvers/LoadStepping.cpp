@@ -91,6 +91,9 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
       if (s.linearIterations >= 0)
         std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d (linear %5d)  residual %.3e (tol %.3e)  wall %.2f s\n",
                     step, steps, tB, s.iterations, s.linearIterations, s.residual, s.tolerance, wall);
+      else if (s.rounds >= 0)  // iterations: the total over the step's loading-balance rounds
+        std::printf("load step %4d/%d  t = %-12.6g iterations %7d  LBC rounds %2d  residual %.3e (tol %.3e)  wall %.2f s\n",
+                    step, steps, tB, s.iterations, s.rounds, s.residual, s.tolerance, wall);
       else
         std::printf("load step %4d/%d  t = %-12.6g iterations %7d  residual %.3e (tol %.3e)  wall %.2f s\n", step, steps,
                     tB, s.iterations, s.residual, s.tolerance, wall);

@@ -21,3 +21,32 @@ periforge_check(drucker_biaxial_coarse_np1_vs_np2 "drucker_biaxial_coarse_np1;dr
   ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_np2/biaxial_test2_coarse.e
   ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_np1/biaxial_test2_coarse.e
   ${REG}/drucker_prager/np_agreement.comp)
+
+# Loading-balance correction (ADR 'Loading Balance Correction' = true; biaxial_test2_coarse_lbc.xml, written by
+# make_biaxial.py; examples/drucker_prager/README.md, "Loading-balance correction"):
+#  - with it, no point ends a load step with Yield_Function (J / J_yield - 1) above the rounds' tolerance 1e-6
+#    (src/solvers/YieldRounds.hpp states why 1e-6), np 1 and np 2;
+#  - without it (the plain runs above) none does either: every evaluation return-maps every point from the
+#    step's committed state, so the paper's fictitious yielding cannot occur; measured, not assumed;
+#  - np 2 against np 1 with it, within the ADR tolerance (np_agreement.comp);
+#  - with it against without it, within the ADR tolerance (lbc_agreement.comp states the bounds and why).
+foreach(np 1 2)
+  periforge_run(drucker_biaxial_coarse_lbc_np${np} ${DPEX}/biaxial_test2_coarse_lbc.xml ${np})
+  periforge_check(drucker_biaxial_coarse_lbc_np${np}_yield drucker_biaxial_coarse_lbc_np${np}
+    ${PY} ${DPEX}/lbc_check.py
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_lbc_np${np}/biaxial_test2_coarse_lbc.e
+    --max-violations 0)
+  periforge_check(drucker_biaxial_coarse_np${np}_yield drucker_biaxial_coarse_np${np}
+    ${PY} ${DPEX}/lbc_check.py ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_np${np}/biaxial_test2_coarse.e
+    --max-violations 0)
+endforeach()
+periforge_check(drucker_biaxial_coarse_lbc_np1_vs_np2 "drucker_biaxial_coarse_lbc_np1;drucker_biaxial_coarse_lbc_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_lbc_np2/biaxial_test2_coarse_lbc.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_lbc_np1/biaxial_test2_coarse_lbc.e
+  ${REG}/drucker_prager/np_agreement.comp)
+periforge_check(drucker_biaxial_coarse_lbc_vs_plain "drucker_biaxial_coarse_lbc_np1;drucker_biaxial_coarse_np1"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_lbc_np1/biaxial_test2_coarse_lbc.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_np1/biaxial_test2_coarse.e
+  ${REG}/drucker_prager/lbc_agreement.comp)

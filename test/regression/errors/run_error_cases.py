@@ -76,6 +76,11 @@ CASES = [
     ("Final Output Step below 1",
      [('<Parameter name="Output Filename" type="string" value="bar_3d"/>', '<Parameter name="Output Filename" type="string" value="bar_3d"/>\n    <Parameter name="Final Output Step" type="int" value="0"/>')],
      ["Final Output Step"]),
+    ("Loading Balance Correction on a material without it",
+     [('<Parameter name="Relative Tolerance" type="double" value="1.0e-7"/>',
+       '<Parameter name="Relative Tolerance" type="double" value="1.0e-7"/>'
+       '<Parameter name="Loading Balance Correction" type="bool" value="true"/>')],
+     ["Solver/Adaptive Dynamic Relaxation", "'Loading Balance Correction'", "block_1", "Steel"]),
     ("Time Steps that do not increase",
      [(r'<Parameter name="Final Time" type="double" value="1.0"/>\s*<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
        '<ParameterList name="QuasiStatic"><Parameter name="Time Steps" type="string" value="0.0 0.5 0.4"/></ParameterList>'),

@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Loading-balance correction figures of a biaxial run (make_biaxial.py; README, "Loading-balance correction").
+
+usage: lbc_check.py RUN.e [--log RUN.log] [--csv RUN.csv] [--tol T] [--max-violations N] [--expect KEY=V:R ...]
+
+Prints, from RUN.e, the step ends (output steps after step 0) at which some point has Yield_Function > T and how
+many (step, point) pairs that is, and the largest Yield_Function of any point at any step end. Yield_Function
+is Drucker Prager Correspondence's J / J_yield - 1 at the point's pressure (docs/materials.md): dimensionless,
+> 0 outside the yield surface. T defaults to 1e-6, the loading-balance tolerance (src/solvers/YieldRounds.hpp).
+From RUN.log (the run's stdout): the LBC rounds per load step (min / median / max; absent without the
+correction) and the ADR iterations summed over all steps. From RUN.csv: the centre probe's end von Mises stress.
+
+--max-violations N   exit 1 if more than N (step, point) pairs have Yield_Function > T (default: no limit)
+--expect KEY=V:R     exit 1 unless figure KEY is within R (relative; absolute if V = 0) of V. Keys: violations,
+                     yield_max, rounds_min, rounds_median, rounds_max, iterations, centre_vm
+Exit 0 if every check holds, 1 if one fails, 2 on a usage or read error.
+"""
+import argparse
+import csv
+import os
+import re
+import statistics
+import sys
+
+
+def _reexec_with_system_python():
+    # numpy/netCDF4 come from Debian packages (/usr/bin/python3), as for scripts/exodiff.py.
+    syspy = "/usr/bin/python3"
+    if os.path.exists(syspy) and os.path.realpath(sys.executable) != os.path.realpath(syspy) \
+            and not os.environ.get("PF_NO_REEXEC"):
+        os.environ["PF_NO_REEXEC"] = "1"
+        os.execv(syspy, [syspy] + sys.argv)
+
+
+try:
+    import numpy as np
+    import netCDF4
+except ImportError:
+    _reexec_with_system_python()
+    sys.stderr.write("lbc_check.py: needs numpy and netCDF4 (Debian: python3-netcdf4)\n")
+    sys.exit(2)
+
+
+def names(ds, var):
+    return [b"".join(r).split(b"\0", 1)[0].decode().strip() for r in np.ma.getdata(ds.variables[var][:])]
+
+
+def yield_function(path):
+    """Yield_Function per output step (rows) and point (columns, all element blocks)."""
+    with netCDF4.Dataset(path) as ds:
+        elem = names(ds, "name_elem_var") if "name_elem_var" in ds.variables else []
+        if "Yield_Function" not in elem:
+            raise SystemExit(f"lbc_check.py: {path}: no element variable Yield_Function (add it to Output Variables)")
+        k = elem.index("Yield_Function") + 1
+        blocks = sorted(v for v in ds.variables if v.startswith(f"vals_elem_var{k}eb"))
+        return np.hstack([np.ma.getdata(ds.variables[b][:]) for b in blocks])
+
+
+def log_figures(path):
+    rounds, iterations = [], 0
+    for line in open(path):
+        m = re.match(r"load step\s+\d+/\d+\s+t = \S+\s+iterations\s+(\d+)(?:\s+LBC rounds\s+(\d+))?", line)
+        if m:
+            iterations += int(m.group(1))
+            if m.group(2):
+                rounds.append(int(m.group(2)))
+    return rounds, iterations
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("exo")
+    ap.add_argument("--log")
+    ap.add_argument("--csv")
+    ap.add_argument("--tol", type=float, default=1e-6)
+    ap.add_argument("--max-violations", type=int)
+    ap.add_argument("--expect", action="append", default=[])
+    a = ap.parse_args()
+    f = yield_function(a.exo)[1:]  # step 0 is the initial state, not a step end
+    over = f > a.tol
+    fig = {"violations": int(over.sum()), "yield_max": float(f.max())}
+    print(f"{a.exo}: {f.shape[0]} step ends x {f.shape[1]} points: {fig['violations']} (step, point) pairs with "
+          f"Yield_Function > {a.tol:g}, at {int(over.any(axis=1).sum())} step ends; largest Yield_Function "
+          f"{fig['yield_max']:.3e}")
+    ok = True
+    if a.max_violations is not None and fig["violations"] > a.max_violations:
+        print(f"FAIL: more than {a.max_violations} pairs past the yield tolerance")
+        ok = False
+    if a.log:
+        rounds, fig["iterations"] = log_figures(a.log)
+        print(f"{a.log}: ADR iterations over all steps {fig['iterations']}")
+        if rounds:
+            fig.update(rounds_min=min(rounds), rounds_median=statistics.median(rounds), rounds_max=max(rounds))
+            print(f"{a.log}: LBC rounds per step over {len(rounds)} steps: min {fig['rounds_min']}, median "
+                  f"{fig['rounds_median']:g}, max {fig['rounds_max']}, total {sum(rounds)}")
+    if a.csv:
+        rows = list(csv.DictReader(open(a.csv)))
+        fig["centre_vm"] = float(rows[-1]["Probe_Centre_Von_Mises_Stress"])
+        print(f"{a.csv}: centre end von Mises {fig['centre_vm'] / 1e3:.3f} kPa")
+    for e in a.expect:
+        key, rest = e.split("=", 1)
+        value, bound = (float(v) for v in rest.split(":"))
+        if key not in fig:
+            print(f"FAIL: --expect {key}: no such figure from the given files")
+            ok = False
+            continue
+        err = abs(fig[key] - value) / (abs(value) if value != 0 else 1.0)
+        if err > bound:
+            print(f"FAIL: {key} = {fig[key]:g}, expected {value:g} within {bound:g}")
+            ok = False
+    print("PASS" if ok else "FAIL")
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

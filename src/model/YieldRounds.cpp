@@ -1,0 +1,35 @@
+// Model's share of the loading-balance correction (Model.hpp, solvers/YieldRounds.hpp): the admitted plastic
+// set handed to the materials and the counts of points past their yield surface.
+#include "Model.hpp"
+
+namespace pf {
+
+std::string Model::yieldRoundsRefusal() const {
+  for (const BlockModel& b : blocks_)
+    if (!b.material->supportsYieldRounds()) return "block '" + b.name + "': material '" + b.materialName + "'";
+  return "";
+}
+
+void Model::beginYieldRounds() {
+  admitted_.assign(numOwned(), 0);
+  yieldRounds_ = true;
+}
+
+double Model::admitYielding(double tol) {
+  if (!state_.has("Yield_Function")) return 0.0;
+  const double* f = state_.trial("Yield_Function");
+  double added = 0.0;
+  for (int i = 0; i < numOwned(); ++i)
+    if (!admitted_[i] && f[i] > tol) admitted_[i] = 1, added += 1.0;
+  return sum(added);
+}
+
+double Model::countYielding(double tol) {
+  if (!state_.has("Yield_Function")) return sum(0.0);  // still collective: every rank calls sum
+  const double* f = state_.trial("Yield_Function");
+  double n = 0.0;
+  for (int i = 0; i < numOwned(); ++i) n += f[i] > tol ? 1.0 : 0.0;
+  return sum(n);
+}
+
+}  // namespace pf
