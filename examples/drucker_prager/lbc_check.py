@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Loading-balance correction figures of a biaxial run (make_biaxial.py; README, "Loading-balance correction").
 
-usage: lbc_check.py RUN.e [--log RUN.log] [--csv RUN.csv] [--tol T] [--max-violations N] [--expect KEY=V:R ...]
+usage: lbc_check.py RUN.e [--log RUN.log] [--csv RUN.csv] [--tol T] [--max-violations N] [--against OTHER.e
+                    [--bounds U:S:X]] [--expect KEY=V:R ...]
 
 Prints, from RUN.e, the step ends (output steps after step 0) at which some point has Yield_Function > T and how
 many (step, point) pairs that is, and the largest Yield_Function of any point at any step end. Yield_Function
@@ -10,9 +11,16 @@ is Drucker Prager Correspondence's J / J_yield - 1 at the point's pressure (docs
 From RUN.log (the run's stdout): the LBC rounds per load step (min / median / max; absent without the
 correction) and the ADR iterations summed over all steps. From RUN.csv: the centre probe's end von Mises stress.
 
+--against OTHER.e    compare with another run of the same specimen and load steps (e.g. without the correction,
+                     or at another np) at every output time both files have: the largest difference of
+                     displacement, von Mises stress and equivalent plastic strain over points and steps, and the
+                     first step past --bounds; nodes matched by coordinates
+--bounds U:S:X       with --against: exit 1 if a difference exceeds U [m], S [Pa] or X (default 5e-8:50:2e-6,
+                     test/regression/drucker_prager/np_agreement.comp's, whose comment gives the reason)
 --max-violations N   exit 1 if more than N (step, point) pairs have Yield_Function > T (default: no limit)
 --expect KEY=V:R     exit 1 unless figure KEY is within R (relative; absolute if V = 0) of V. Keys: violations,
-                     yield_max, rounds_min, rounds_median, rounds_max, iterations, centre_vm
+                     yield_max, rounds_min, rounds_median, rounds_max, iterations, centre_vm, diff_disp,
+                     diff_vm, diff_xi, first_past (the first step past --bounds, -1: none)
 Exit 0 if every check holds, 1 if one fails, 2 on a usage or read error.
 """
 import argparse
@@ -56,6 +64,38 @@ def yield_function(path):
         return np.hstack([np.ma.getdata(ds.variables[b][:]) for b in blocks])
 
 
+def fields(path):
+    """times, and per step and point (sorted by y, then x): ux, uy, von Mises, equivalent plastic strain."""
+    with netCDF4.Dataset(path) as ds:
+        nod, elem = names(ds, "name_nod_var"), names(ds, "name_elem_var")
+        get = lambda v: np.ma.getdata(ds.variables[v][:])
+        order = np.lexsort((get("coordx"), get("coordy")))
+        out = [get(f"vals_nod_var{nod.index(n) + 1}") for n in ("DisplacementX", "DisplacementY")]
+        for n in ("Von_Mises_Stress", "Equivalent_Plastic_Strain"):
+            k = elem.index(n) + 1
+            out.append(np.hstack([get(b) for b in sorted(v for v in ds.variables if v.startswith(f"vals_elem_var{k}eb"))]))
+        # element order = node order here (one SPHERE element per node, written in node order)
+        return get("time_whole"), [a[:, order] for a in out]
+
+
+def compare(a_path, b_path, bounds):
+    (ta, fa), (tb, fb) = fields(a_path), fields(b_path)
+    n = min(len(ta), len(tb))
+    if not np.allclose(ta[:n], tb[:n], rtol=0, atol=1e-12):
+        raise SystemExit(f"lbc_check.py: {a_path} and {b_path} have different output times")
+    diff = np.stack([np.maximum(abs(fa[0][:n] - fb[0][:n]), abs(fa[1][:n] - fb[1][:n])).max(axis=1),
+                     abs(fa[2][:n] - fb[2][:n]).max(axis=1), abs(fa[3][:n] - fb[3][:n]).max(axis=1)], axis=1)
+    worst = diff.max(axis=0)
+    past = np.nonzero((diff > np.array(bounds)).any(axis=1))[0]
+    print(f"against {b_path}, steps 0..{n - 1} (t = {ta[n - 1]:g}): largest difference displacement {worst[0]:.3e} m, "
+          f"von Mises {worst[1]:.3e} Pa, equivalent plastic strain {worst[2]:.3e}")
+    if len(past):
+        s = past[0]
+        print(f"  first step past the bounds {bounds}: step {s} (t = {ta[s]:g}): {diff[s][0]:.3e} m, {diff[s][1]:.3e} Pa, "
+              f"{diff[s][2]:.3e}; largest before it: {diff[:s].max(axis=0) if s else 'none'}")
+    return {"diff_disp": worst[0], "diff_vm": worst[1], "diff_xi": worst[2], "first_past": int(past[0]) if len(past) else -1}
+
+
 def log_figures(path):
     rounds, iterations = [], 0
     for line in open(path):
@@ -74,6 +114,8 @@ def main():
     ap.add_argument("--csv")
     ap.add_argument("--tol", type=float, default=1e-6)
     ap.add_argument("--max-violations", type=int)
+    ap.add_argument("--against")
+    ap.add_argument("--bounds", default="5e-8:50:2e-6")
     ap.add_argument("--expect", action="append", default=[])
     a = ap.parse_args()
     f = yield_function(a.exo)[1:]  # step 0 is the initial state, not a step end
@@ -86,6 +128,12 @@ def main():
     if a.max_violations is not None and fig["violations"] > a.max_violations:
         print(f"FAIL: more than {a.max_violations} pairs past the yield tolerance")
         ok = False
+    if a.against:
+        bounds = [float(v) for v in a.bounds.split(":")]
+        fig.update(compare(a.exo, a.against, bounds))
+        if fig["first_past"] >= 0:
+            print("FAIL: the runs differ by more than the bounds")
+            ok = False
     if a.log:
         rounds, fig["iterations"] = log_figures(a.log)
         print(f"{a.log}: ADR iterations over all steps {fig['iterations']}")

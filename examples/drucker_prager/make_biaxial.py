@@ -4,7 +4,8 @@ E 30 MPa, nu 0.25, phi 35 deg, c 60 kPa, m0 0.2, h 0, d0 0, confining stress 400
 axial strain 0.05, 100 load steps each phase (ADR). Band off (NDO band: issue 18 part 2). Tests 5-7 (h > 0 or
 d0 = 1) need another phase-1 top law: the closed form below holds for d0 = 0, h = 0 only.
 
-usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}{,_lbc}.xml and biaxial_test{1,3,4}_fine.xml here)
+usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}{,_lbc}.xml, biaxial_test2_coarse_lbc_t110.xml and
+                          biaxial_test{1,3,4}_fine.xml here)
 
 Specimen: nx x ny points of spacing dx (cell centres from dx/2), plane strain. Left and right faces: the
 confining pressure p(t) (Pressure, ramped over t in [0, 100], then held). Bottom row: u_y = 0; its middle
@@ -47,7 +48,7 @@ def analytic_end(P):
     return math.sqrt(3) * (q - P) / 2
 
 
-def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False):
+def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200):
     TY, EL, PL_A, PL_B, E100 = top_law(P)
     W, H = nx * dx, ny * dx
     L = (ny - 1) * dx                                    # top row to bottom row
@@ -107,9 +108,9 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False):
 {bc("Confine Left", "Pressure", "Left", val(pres))}{bc("Confine Right", "Pressure", "Right", val(pres))}{bc("Bottom Y", "Prescribed Displacement", "Bottom", coord("y", "0.0"))}{bc("Bottom Middle X", "Prescribed Displacement", "Bottom Middle", coord("x", "0.0"))}{bc("Top Y", "Prescribed Displacement", "Top", coord("y", top))}  </ParameterList>
   <ParameterList name="Solver">
     <Parameter name="Initial Time" type="double" value="0.0"/>
-    <Parameter name="Final Time" type="double" value="200.0"/>
+    <Parameter name="Final Time" type="double" value="{t_end:.1f}"/>
     <ParameterList name="Adaptive Dynamic Relaxation">
-      <Parameter name="Number of Load Steps" type="int" value="200"/>
+      <Parameter name="Number of Load Steps" type="int" value="{t_end}"/>
       <Parameter name="Relative Tolerance" type="double" value="{tol:g}"/>{lbc_line}
     </ParameterList>
   </ParameterList>
@@ -147,7 +148,12 @@ if __name__ == "__main__":
     decks += [(f"biaxial_test{n}_fine", 2.5e-3, 21, 41, n, False) for n in (1, 3, 4)]
     # Test 2 with the loading-balance correction (ADR "Loading Balance Correction"; README, lbc_check.py).
     decks += [("biaxial_test2_coarse_lbc", 5e-3, 11, 21, 2, True), ("biaxial_test2_fine_lbc", 2.5e-3, 21, 41, 2, True)]
-    for name, dx, nx, ny, n, lbc in decks:
+    decks = [d + (200,) for d in decks]
+    # The regression deck (ctest drucker_biaxial_coarse_lbc_*): the same load steps to t = 60 only (60 % of the
+    # confinement: elastic steps with one round, plastic ones with two and three), so that a run stays under 20 s
+    # at np 2 on a loaded machine (to t = 110: 17 s at np 1, 44 s at np 2, load average 6).
+    decks += [("biaxial_test2_coarse_lbc_t60", 5e-3, 11, 21, 2, True, 60)]
+    for name, dx, nx, ny, n, lbc, t_end in decks:
         print(f"{name}: confining {CONFINING[n] / 1e3:g} kPa, analytic end von Mises {analytic_end(CONFINING[n]) / 1e3:.2f} kPa")
         with open(os.path.join(here, name + ".xml"), "w") as f:
-            f.write(deck(name, dx, nx, ny, 1e-6, CONFINING[n], n, lbc))
+            f.write(deck(name, dx, nx, ny, 1e-6, CONFINING[n], n, lbc, t_end))
