@@ -28,7 +28,11 @@ SolverEntry AdrSolver::entry() {
       S::flag("Loading Balance Correction",
               "Li & Geng's loading-balance correction: relax with the step's admitted plastic set frozen (empty at "
               "the start: all elastic), admit the points past their yield surface, relax again until none is; "
-              "then commit (materials that support it: Drucker Prager Correspondence)").byDefault("false")};
+              "then commit (materials that support it: Drucker Prager Correspondence)").byDefault("false"),
+      S::real("Loading Balance Tolerance",
+              "the material's dimensionless yield function (Drucker-Prager: J / J_yield - 1) above which a point "
+              "outside the admitted set is admitted; default: ADR's default Relative Tolerance").byDefault("1e-6")
+          .nonNegative()};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     AdrOptions o;
     o.relativeTolerance = p.get("Relative Tolerance");
@@ -37,6 +41,7 @@ SolverEntry AdrSolver::entry() {
     o.safetyFactor = p.get("Safety Factor");
     o.verbose = p.flag("Verbose");
     o.loadBalance = p.flag("Loading Balance Correction");
+    o.loadBalanceTolerance = p.get("Loading Balance Tolerance");
     o.where = p.where();
     return std::unique_ptr<Solver>(new AdrSolver(o));
   };
@@ -144,7 +149,7 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
                    iterations += r.iterations;
                  };
                  solveWithBreakRounds(model, u, [&] {
-                   if (opt_.loadBalance) rounds += solveWithYieldRounds(model, relaxOnce, t);
+                   if (opt_.loadBalance) rounds += solveWithYieldRounds(model, relaxOnce, t, opt_.loadBalanceTolerance);
                    else relaxOnce();
                    return true;
                  }, t);

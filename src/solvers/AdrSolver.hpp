@@ -18,6 +18,7 @@ struct AdrOptions {
   double safetyFactor = 1.0;        // multiplies the fictitious density
   bool verbose = false;             // print the residual history of every step
   bool loadBalance = false;         // Li & Geng's loading-balance correction (YieldRounds.hpp)
+  double loadBalanceTolerance = 1e-6;  // its yield tolerance (YieldRounds.hpp, kYieldTolerance)
   std::string where;                // the deck list, for input errors ("input.xml: Solver/Adaptive Dynamic Relaxation")
 };
 

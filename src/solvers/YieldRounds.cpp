@@ -22,10 +22,10 @@ int yieldRounds(const std::function<void()>& relax, const std::function<double()
   }
 }
 
-int solveWithYieldRounds(Model& model, const std::function<void()>& relax, double t) {
+int solveWithYieldRounds(Model& model, const std::function<void()>& relax, double t, double tol) {
   model.beginYieldRounds();
   try {
-    return yieldRounds(relax, [&] { return model.admitYielding(kYieldTolerance); }, t);
+    return yieldRounds(relax, [&] { return model.admitYielding(tol); }, t);
   } catch (...) {
     model.endYieldRounds();
     throw;
