@@ -4,7 +4,7 @@ E 30 MPa, nu 0.25, phi 35 deg, c 60 kPa, m0 0.2, h 0, d0 0, confining stress 400
 axial strain 0.05, 100 load steps each phase (ADR). Band off (NDO band: issue 18 part 2). Tests 5-7 (h > 0 or
 d0 = 1) need another phase-1 top law: the closed form below holds for d0 = 0, h = 0 only.
 
-usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}{,_lbc}.xml, biaxial_test2_coarse_lbc_t110.xml and
+usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}{,_lbc,_lbc_surface}.xml, biaxial_test2_coarse_lbc_t60.xml and
                           biaxial_test{1,3,4}_fine.xml here)
 
 Specimen: nx x ny points of spacing dx (cell centres from dx/2), plane strain. Left and right faces: the
@@ -57,7 +57,10 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200):
            f"else {{ value = -{L:.10g}*({E100:.10g} + 0.05*(t - 100)/100); }}")
     pres = f"if (t &lt;= 100) {{ value = {P / 100:.10g}*t; }} else {{ value = {P:.10g}; }}"
     cx, cy = W / 2, H / 2
+    # lbc: False (off), True (on, the paper's all-elastic start) or the name of a 'Loading Balance Start'
     lbc_line = ('\n      <Parameter name="Loading Balance Correction" type="bool" value="true"/>' if lbc else "")
+    if isinstance(lbc, str):
+        lbc_line += f'\n      <Parameter name="Loading Balance Start" type="string" value="{lbc}"/>'
     bc = lambda n, t, ns, extra: (f'    <ParameterList name="{n}"><Parameter name="Type" type="string" value="{t}"/>\n'
                                   f'      <Parameter name="Node Set" type="string" value="{ns}"/>{extra}</ParameterList>\n')
     coord = lambda c, v: (f'<Parameter name="Coordinate" type="string" value="{c}"/>\n'
@@ -148,6 +151,9 @@ if __name__ == "__main__":
     decks += [(f"biaxial_test{n}_fine", 2.5e-3, 21, 41, n, False) for n in (1, 3, 4)]
     # Test 2 with the loading-balance correction (ADR "Loading Balance Correction"; README, lbc_check.py).
     decks += [("biaxial_test2_coarse_lbc", 5e-3, 11, 21, 2, True), ("biaxial_test2_fine_lbc", 2.5e-3, 21, 41, 2, True)]
+    # ... and with the set starting from the points on their yield surface (ADR 'Loading Balance Start').
+    decks += [("biaxial_test2_coarse_lbc_surface", 5e-3, 11, 21, 2, "Yield Surface"),
+              ("biaxial_test2_fine_lbc_surface", 2.5e-3, 21, 41, 2, "Yield Surface")]
     decks = [d + (200,) for d in decks]
     # The regression deck (ctest drucker_biaxial_coarse_lbc_*): the same load steps to t = 60 only (60 % of the
     # confinement: elastic steps with one round, plastic ones with two and three), so that a run stays under 20 s

@@ -92,8 +92,10 @@ class Model {
   // (collective). countYielding(tol): points with Yield_Function > tol in the trial state (collective; 0 when no
   // material writes the field). yieldRoundsRefusal(): empty if every block's material supports the rounds
   // (Material::supportsYieldRounds), else "block 'NAME': material 'M'" of the first that does not.
+  // beginYieldRounds(onSurfaceTol >= 0): the set starts instead with the points whose committed Yield_Function is
+  // at least -onSurfaceTol (on their yield surface at the last commit: those that flowed in the last step).
   std::string yieldRoundsRefusal() const;
-  void beginYieldRounds();
+  void beginYieldRounds(double onSurfaceTol = -1.0);
   double admitYielding(double tol);
   void endYieldRounds() { yieldRounds_ = false; }
   double countYielding(double tol);

@@ -10,9 +10,12 @@ std::string Model::yieldRoundsRefusal() const {
   return "";
 }
 
-void Model::beginYieldRounds() {
+void Model::beginYieldRounds(double onSurfaceTol) {
   admitted_.assign(numOwned(), 0);
   yieldRounds_ = true;
+  if (onSurfaceTol < 0.0 || !state_.has("Yield_Function")) return;
+  const double* f = state_.committed("Yield_Function");  // a history field: checkpointed, so restarts agree
+  for (int i = 0; i < numOwned(); ++i) admitted_[i] = f[i] >= -onSurfaceTol ? 1 : 0;
 }
 
 double Model::admitYielding(double tol) {

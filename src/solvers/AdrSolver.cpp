@@ -32,7 +32,11 @@ SolverEntry AdrSolver::entry() {
       S::real("Loading Balance Tolerance",
               "the material's dimensionless yield function (Drucker-Prager: J / J_yield - 1) above which a point "
               "outside the admitted set is admitted; default: ADR's default Relative Tolerance").byDefault("1e-6")
-          .nonNegative()};
+          .nonNegative(),
+      S::text("Loading Balance Start",
+              "the admitted set at the start of a step: Elastic (empty, the paper's) or Yield Surface (the points on "
+              "their yield surface at the last commit, i.e. those that flowed in the last step)")
+          .oneOf({"Elastic", "Yield Surface"}).byDefault("Elastic")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     AdrOptions o;
     o.relativeTolerance = p.get("Relative Tolerance");
@@ -42,6 +46,7 @@ SolverEntry AdrSolver::entry() {
     o.verbose = p.flag("Verbose");
     o.loadBalance = p.flag("Loading Balance Correction");
     o.loadBalanceTolerance = p.get("Loading Balance Tolerance");
+    o.loadBalanceFromSurface = p.text("Loading Balance Start") == "Yield Surface";
     o.where = p.where();
     return std::unique_ptr<Solver>(new AdrSolver(o));
   };
@@ -149,8 +154,8 @@ void AdrSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v
                    iterations += r.iterations;
                  };
                  solveWithBreakRounds(model, u, [&] {
-                   if (opt_.loadBalance) rounds += solveWithYieldRounds(model, relaxOnce, t, opt_.loadBalanceTolerance);
-                   else relaxOnce();
+                   if (!opt_.loadBalance) relaxOnce();
+                   else rounds += solveWithYieldRounds(model, relaxOnce, t, opt_.loadBalanceTolerance, opt_.loadBalanceFromSurface);
                    return true;
                  }, t);
                  model.commit();

@@ -19,6 +19,7 @@ struct AdrOptions {
   bool verbose = false;             // print the residual history of every step
   bool loadBalance = false;         // Li & Geng's loading-balance correction (YieldRounds.hpp)
   double loadBalanceTolerance = 1e-6;  // its yield tolerance (YieldRounds.hpp, kYieldTolerance)
+  bool loadBalanceFromSurface = false;  // its set starts with the points on their surface (else empty, the paper's)
   std::string where;                // the deck list, for input errors ("input.xml: Solver/Adaptive Dynamic Relaxation")
 };
 

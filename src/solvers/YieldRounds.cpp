@@ -22,8 +22,8 @@ int yieldRounds(const std::function<void()>& relax, const std::function<double()
   }
 }
 
-int solveWithYieldRounds(Model& model, const std::function<void()>& relax, double t, double tol) {
-  model.beginYieldRounds();
+int solveWithYieldRounds(Model& model, const std::function<void()>& relax, double t, double tol, bool fromSurface) {
+  model.beginYieldRounds(fromSurface ? tol : -1.0);
   try {
     return yieldRounds(relax, [&] { return model.admitYielding(tol); }, t);
   } catch (...) {

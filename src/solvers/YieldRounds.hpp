@@ -6,7 +6,8 @@
 // admits none; the caller then commits. The set starts empty each step (the paper: "at the start of a new
 // loading step, all particles are assumed to behave as linear elastic materials"); a point once admitted stays
 // admitted for the step (its return map gives the elastic state anyway if it unloads), so the rounds end after
-// at most one more than the points that yield.
+// at most one more than the points that yield. Option (ADR 'Loading Balance Start' = "Yield Surface"): start
+// with the points on their yield surface at the last commit instead (examples/drucker_prager/README.md compares).
 //
 // Without it, every force evaluation already return-maps every point from the committed state of the step
 // (nothing plastic is committed before a step converges), so a converged step has no point with f > 0 beyond
@@ -34,7 +35,8 @@ int yieldRounds(const std::function<void()>& relax, const std::function<double()
 // The same on a model: begins its yield rounds (empty set) and runs them. On return the model's trial state is
 // the last relaxation's evaluation, with no point outside the set past tolerance, and the rounds are still
 // active: the caller commits, then calls model.endYieldRounds(). On a throw the rounds are ended here.
-// tol: the yield function a point outside the set may keep (dimensionless, >= 0).
-int solveWithYieldRounds(Model& model, const std::function<void()>& relax, double t, double tol);
+// tol: the yield function a point outside the set may keep (dimensionless, >= 0). fromSurface: the set starts
+// with the points whose committed yield function is >= -tol, else empty.
+int solveWithYieldRounds(Model& model, const std::function<void()>& relax, double t, double tol, bool fromSurface);
 
 }  // namespace pf

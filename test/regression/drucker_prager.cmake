@@ -50,3 +50,12 @@ periforge_check(drucker_biaxial_coarse_lbc_np1_vs_np2 "drucker_biaxial_coarse_lb
 periforge_check(drucker_biaxial_coarse_lbc_vs_plain "drucker_biaxial_coarse_lbc_np1;drucker_biaxial_coarse_np1"
   ${PY} ${DPEX}/lbc_check.py ${LBC}_np1/biaxial_test2_coarse_lbc_t60.e
   --against ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_np1/biaxial_test2_coarse.e --bounds 5e-8:50:2e-6 --expect first_past=-1:0)
+# With 'Loading Balance Start' = Yield Surface (the set starts with the points that flowed in the last step;
+# biaxial_test2_coarse_lbc_surface.xml, all 200 steps, 14 s at np 1): no step end past 1e-6, and the whole history
+# within np_agreement.comp of the plain run (measured 9.8e-9 m, 4.0 Pa, 4.6e-7), on the symmetric branch.
+periforge_run(drucker_biaxial_coarse_lbc_surface_np1 ${DPEX}/biaxial_test2_coarse_lbc_surface.xml 1)
+periforge_check(drucker_biaxial_coarse_lbc_surface_np1_check "drucker_biaxial_coarse_lbc_surface_np1;drucker_biaxial_coarse_np1"
+  ${PY} ${DPEX}/lbc_check.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_lbc_surface_np1/biaxial_test2_coarse_lbc_surface.e
+  --max-violations 0 --against ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_np1/biaxial_test2_coarse.e
+  --expect first_past=-1:0 --expect asym_first=-1:0)
