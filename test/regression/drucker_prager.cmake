@@ -34,7 +34,7 @@ periforge_check(drucker_biaxial_coarse_np1_vs_np2 "drucker_biaxial_coarse_np1;dr
 #  - np 2 against np 1 with it, within the ADR tolerance (np_agreement.comp; measured 2.3e-9 m, 0.47 Pa, 8.3e-8);
 #  - with it against without it over the 60 steps, within the same bounds, because both solve the same discrete
 #    equations to the same residual tolerance (measured 3.8e-9 m, 0.67 Pa, 1.4e-7). Later in the compression the
-#    two separate: the README's full-length comparison (past step 183 they follow different localisation branches).
+#    two separate (README, "Loading-balance correction": from step ~178 the LBC run takes a left-right asymmetric branch).
 set(LBC ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_lbc)
 foreach(np 1 2)
   periforge_run(drucker_biaxial_coarse_lbc_np${np} ${DPEX}/biaxial_test2_coarse_lbc_t60.xml ${np})
