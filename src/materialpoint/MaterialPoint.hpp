@@ -31,6 +31,8 @@ class MaterialPoint {
   void deform(const std::array<double, 9>& F);  // y = F X, F row-major
   void evaluate();                              // trial state of the centre (may throw ConstitutiveFailure)
   void setTime(double t) { view_.time = t; }     // the time evaluate() hands the model (start time: 0)
+  // FamilyView::admitted (per node, centre first; null: every point may yield), for loading-balance tests.
+  void setAdmitted(const char* admitted) { view_.admitted = admitted; }
   void commit() { state_.commit(); }
   void rollback() { state_.rollback(); }
 
