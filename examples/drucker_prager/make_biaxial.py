@@ -5,7 +5,7 @@ axial strain 0.05, 100 load steps each phase (ADR). Band off (NDO band: issue 18
 d0 = 1) need another phase-1 top law: the closed form below holds for d0 = 0, h = 0 only.
 
 usage: make_biaxial.py   (rewrites biaxial_test2_{coarse,fine}{,_lbc,_lbc_surface}.xml, biaxial_test2_coarse_lbc_t60.xml and
-                          biaxial_test{1,3,4}_fine.xml here)
+                          biaxial_test2_coarse_lbc_surface_restart.xml, biaxial_test{1,3,4}_fine.xml here)
 
 Specimen: nx x ny points of spacing dx (cell centres from dx/2), plane strain. Left and right faces: the
 confining pressure p(t) (Pressure, ramped over t in [0, 100], then held). Bottom row: u_y = 0; its middle
@@ -48,7 +48,7 @@ def analytic_end(P):
     return math.sqrt(3) * (q - P) / 2
 
 
-def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200):
+def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200, restart=0):
     TY, EL, PL_A, PL_B, E100 = top_law(P)
     W, H = nx * dx, ny * dx
     L = (ny - 1) * dx                                    # top row to bottom row
@@ -59,6 +59,9 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200):
     cx, cy = W / 2, H / 2
     # lbc: False (off), True (on, the paper's all-elastic start) or the name of a 'Loading Balance Start'
     lbc_line = ('\n      <Parameter name="Loading Balance Correction" type="bool" value="true"/>' if lbc else "")
+    # restart n: a Restart list every n steps and the output named rs, as test/regression/restart/run_restart.py wants
+    restart_list = (f'  <ParameterList name="Restart">\n    <Parameter name="Checkpoint Frequency" type="int" '
+                    f'value="{restart}"/>\n  </ParameterList>\n' if restart else "")
     if isinstance(lbc, str):
         lbc_line += f'\n      <Parameter name="Loading Balance Start" type="string" value="{lbc}"/>'
     bc = lambda n, t, ns, extra: (f'    <ParameterList name="{n}"><Parameter name="Type" type="string" value="{t}"/>\n'
@@ -117,9 +120,9 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200):
       <Parameter name="Relative Tolerance" type="double" value="{tol:g}"/>{lbc_line}
     </ParameterList>
   </ParameterList>
-  <ParameterList name="Output">
+{restart_list}  <ParameterList name="Output">
     <Parameter name="Output File Type" type="string" value="ExodusII"/>
-    <Parameter name="Output Filename" type="string" value="{name}"/>
+    <Parameter name="Output Filename" type="string" value="{"rs" if restart else name}"/>
     <Parameter name="Output Frequency" type="int" value="1"/>
     <Parameter name="Reactions" type="string" value="Top, Bottom"/>
     <ParameterList name="Output Variables">
@@ -159,7 +162,10 @@ if __name__ == "__main__":
     # confinement: elastic steps with one round, plastic ones with two and three), so that a run stays under 20 s
     # at np 2 on a loaded machine (to t = 110: 17 s at np 1, 44 s at np 2, load average 6).
     decks += [("biaxial_test2_coarse_lbc_t60", 5e-3, 11, 21, 2, True, 60)]
-    for name, dx, nx, ny, n, lbc, t_end in decks:
+    decks = [d + (0,) for d in decks]
+    # The Yield Surface start killed and restarted (run_restart.py kill; README): checkpoints every 40 steps.
+    decks += [("biaxial_test2_coarse_lbc_surface_restart", 5e-3, 11, 21, 2, "Yield Surface", 200, 40)]
+    for name, dx, nx, ny, n, lbc, t_end, restart in decks:
         print(f"{name}: confining {CONFINING[n] / 1e3:g} kPa, analytic end von Mises {analytic_end(CONFINING[n]) / 1e3:.2f} kPa")
         with open(os.path.join(here, name + ".xml"), "w") as f:
-            f.write(deck(name, dx, nx, ny, 1e-6, CONFINING[n], n, lbc, t_end))
+            f.write(deck(name, dx, nx, ny, 1e-6, CONFINING[n], n, lbc, t_end, restart))
