@@ -89,8 +89,7 @@ class Model {
   // Between beginYieldRounds and endYieldRounds only admitted points may return-map (FamilyView::admitted); the
   // set starts empty: every point elastic, as the paper's balance module starts each load step. admitYielding(tol)
   // admits the owned points whose last evaluation left Yield_Function > tol outside the set and returns how many
-  // (collective). countYielding(tol): points with Yield_Function > tol in the trial state (collective; 0 when no
-  // material writes the field). yieldRoundsRefusal(): empty if every block's material supports the rounds
+  // (collective). yieldRoundsRefusal(): empty if every block's material supports the rounds
   // (Material::supportsYieldRounds), else "block 'NAME': material 'M'" of the first that does not.
   // beginYieldRounds(onSurfaceTol >= 0): the set starts instead with the points whose committed Yield_Function is
   // at least -onSurfaceTol (on their yield surface at the last commit: those that flowed in the last step).
@@ -98,7 +97,7 @@ class Model {
   void beginYieldRounds(double onSurfaceTol = -1.0);
   double admitYielding(double tol);
   void endYieldRounds() { yieldRounds_ = false; }
-  double countYielding(double tol);
+
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions

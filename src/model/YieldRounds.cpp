@@ -1,5 +1,5 @@
 // Model's share of the loading-balance correction (Model.hpp, solvers/YieldRounds.hpp): the admitted plastic
-// set handed to the materials and the counts of points past their yield surface.
+// set handed to the materials and the count of the points it admits.
 #include "Model.hpp"
 
 namespace pf {
@@ -25,14 +25,6 @@ double Model::admitYielding(double tol) {
   for (int i = 0; i < numOwned(); ++i)
     if (!admitted_[i] && f[i] > tol) admitted_[i] = 1, added += 1.0;
   return sum(added);
-}
-
-double Model::countYielding(double tol) {
-  if (!state_.has("Yield_Function")) return sum(0.0);  // still collective: every rank calls sum
-  const double* f = state_.trial("Yield_Function");
-  double n = 0.0;
-  for (int i = 0; i < numOwned(); ++i) n += f[i] > tol ? 1.0 : 0.0;
-  return sum(n);
 }
 
 }  // namespace pf
