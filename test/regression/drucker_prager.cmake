@@ -24,7 +24,7 @@ periforge_check(drucker_biaxial_coarse_np1_vs_np2 "drucker_biaxial_coarse_np1;dr
 
 # Loading-balance correction (ADR 'Loading Balance Correction' = true; biaxial_test2_coarse_lbc_t60.xml, written by
 # make_biaxial.py: the coarse deck's first 60 load steps, elastic steps with one round and plastic ones with two and
-# three; 9 s at np 1, 23 s at np 2 on a machine at load 6; examples/drucker_prager/README.md,
+# three; 7 s at np 1 and 11 s at np 2 at load average 3.5, 9 and 23 s at load 6; examples/drucker_prager/README.md,
 # "Loading-balance correction"):
 #  - with it, no point ends a load step with Yield_Function (J / J_yield - 1) above the rounds' tolerance 1e-6
 #    (src/solvers/YieldRounds.hpp states why 1e-6), np 1 and np 2; measured: largest 7.7e-16;
