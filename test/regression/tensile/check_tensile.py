@@ -79,13 +79,13 @@ def main():
     e_max, _ = foster_uniaxial.considere(t, eg, sig, a.rate)
     if a.ref_csv:
         with open(a.ref_csv, "w") as f:
-            f.write("time,E_zz,true_stress,eps_p,eps_p_rate\n")
+            f.write("time,E_zz,True_Stress,Equivalent_Plastic_Strain,Equivalent_Plastic_Strain_Rate\n")
             for k in range(0, len(t), 20):
                 f.write("%.9g,%.9g,%.9g,%.9g,%.9g\n" % (t[k], eg[k], sig[k], ep[k], epr[k]))
     rows, info = th.history(a.exodus)
     if a.history_csv:
-        keys = [k for k in ["time", "E_zz", "true_stress", "true_stress_force_area", "gauge_spread",
-                            "free_peak_ratio", "eps_p", "eps_p_rate"] if k in rows[0]]
+        keys = [k for k in ["time", "E_zz", "True_Stress", "True_Stress_Force_Area", "gauge_spread",
+                            "free_peak_ratio", "Equivalent_Plastic_Strain", "Equivalent_Plastic_Strain_Rate"] if k in rows[0]]
         with open(a.history_csv, "w") as f:
             f.write(",".join(keys) + "\n")
             for r in rows:
@@ -93,13 +93,13 @@ def main():
     fails = []
     tt = np.array([r["time"] for r in rows])
     ee = np.array([r["E_zz"] for r in rows])
-    ss = np.array([r["true_stress"] for r in rows])
+    ss = np.array([r["True_Stress"] for r in rows])
     ref = np.interp(ee, eg, sig)
     plastic = (ee >= a.e_from)
     period = ring_period(tt[plastic], (ss - ref)[plastic])
     s_avg = window_mean(tt, ss, period)
     r_avg = window_mean(tt, ref, period)
-    fa = np.array([r.get("true_stress_force_area", np.nan) for r in rows])
+    fa = np.array([r.get("True_Stress_Force_Area", np.nan) for r in rows])
     fa_avg = window_mean(tt, fa, period)
     # frames whose whole window lies in [e_from, Considere] and inside the run
     sel = plastic & (ee <= e_max) & (tt - 0.5 * period >= tt[plastic][0]) & (tt + 0.5 * period <= tt[-1])
@@ -120,10 +120,11 @@ def main():
     result = {"points": info["points"], "gauge_points": info["gauge_points"], "frames_compared": n,
               "ring_period_s": period, "ring_amplitude_raw": ring, "max_rel_diff": worst, "at_E_zz": worst_at, "max_rel_diff_force_area": worst_fa,
               "max_rel_diff_to_end": worst_full,
-              "considere_E_zz": e_max, "end_E_zz": last["E_zz"], "end_true_stress": last["true_stress"],
+              "considere_E_zz": e_max, "end_E_zz": last["E_zz"], "end_true_stress": last["True_Stress"],
               "end_ref_stress": float(np.interp(last["E_zz"], eg, sig)),
               "end_gauge_spread": last["gauge_spread"], "end_free_peak_ratio": last["free_peak_ratio"],
-              "spread_at_considere": at_max["gauge_spread"], "eps_p_rate_at_considere": at_max["eps_p_rate"]}
+              "spread_at_considere": at_max["gauge_spread"],
+              "eps_p_rate_at_considere": at_max["Equivalent_Plastic_Strain_Rate"]}
     if n < 5:
         fails.append("only %d frames between E_zz %.3f and %.4f" % (n, a.e_from, e_max))
     if abs(worst) > a.tol:
@@ -133,7 +134,7 @@ def main():
         fails.append("the gauge stress rings by %.3f of the reference (bound %.2f)" % (ring, a.max_ring))
     if last["E_zz"] < 0.9 * eg[-1]:
         fails.append("the run ends at E_zz %.4f, short of %.4f" % (last["E_zz"], eg[-1]))
-    if last["eps_p"] <= 0.0:
+    if last["Equivalent_Plastic_Strain"] <= 0.0:
         fails.append("no plastic strain in the gauge")
     if a.json:
         print(json.dumps(result))
@@ -144,7 +145,7 @@ def main():
               " reference %.1f), gauge spread %.4f, largest layer strain / gauge mean %.3f; to the end (past"
               " Considere, information) %+.4f"
               % (info["points"], info["gauge_points"], n, a.e_from, e_max, worst, worst_at or 0.0, worst_fa,
-                 last["E_zz"], last["true_stress"] / 1e6, result["end_ref_stress"] / 1e6, last["gauge_spread"],
+                 last["E_zz"], last["True_Stress"] / 1e6, result["end_ref_stress"] / 1e6, last["gauge_spread"],
                  last["free_peak_ratio"], worst_full))
     for f in fails:
         print("[check_tensile] FAIL: " + f)
