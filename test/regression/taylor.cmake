@@ -8,3 +8,11 @@ endforeach()
 periforge_check(taylor_coarse_check "taylor_coarse_np1;taylor_coarse_np2"
   ${PY} ${REG}/taylor/check_taylor.py ${CMAKE_CURRENT_BINARY_DIR}/regression/taylor_coarse_np2
   ${CMAKE_CURRENT_BINARY_DIR}/regression/taylor_coarse_np1)
+# The stored velocity sweeps (docs/data/taylor_sweep_{8,20}.csv, examples/taylor_impact/README.md): every L_f/L0
+# in the Wilkins-Guinan band at its speed, both ratios monotonic in the speed, the bar off the wall, the energy
+# balance within 1 % (check_sweep.py states each bound).
+foreach(across 8 20)
+  add_test(NAME taylor_sweep_${across}_check
+    COMMAND ${PY} ${REG}/taylor/check_sweep.py ${PROJECT_SOURCE_DIR}/docs/data/taylor_sweep_${across}.csv)
+  set_tests_properties(taylor_sweep_${across}_check PROPERTIES LABELS "regression")
+endforeach()
