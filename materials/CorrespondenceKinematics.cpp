@@ -178,6 +178,49 @@ void addHourglassForce(const FamilyView& fam, int i, const double* y, const Mat3
   }
 }
 
+void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force) {
+  const double* xi0 = fam.x + 3 * i;
+  const double* yi = y + 3 * i;
+  const double* Ai = rows + static_cast<std::size_t>(stride) * i;
+  const double* Fi = Ai + 9;
+  const double ci = Ai[18];
+  double f[3] = {0.0, 0.0, 0.0};
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    const double* Aj = rows + static_cast<std::size_t>(stride) * j;
+    const double* Fj = Aj + 9;
+    const double cj = Aj[18];
+    const bool gathers = Aj[19] != 0.0;
+    const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
+    const double frac = fam.fraction ? fam.fraction[b] : 1.0;
+    const double vj = fam.volume[j] * frac;
+    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
+    const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
+    // Stress: T_i<xi> - T_j<-xi> = omega (A_i + A_j) xi (Foster Eq. 25 at both ends).
+    double ti[3], tj[3];
+    for (int a = 0; a < 3; ++a) {
+      ti[a] = tj[a] = 0.0;
+      for (int s = 0; s < 3; ++s) ti[a] += Ai[3 * a + s] * xi[s], tj[a] += Aj[3 * a + s] * xi[s];
+      ti[a] *= w, tj[a] *= w;
+    }
+    // Hourglass: the bond's term is odd in (Y, xi), so j's end adds c_j (Y - F_j xi) . Y with the same sign.
+    const double len2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
+    double di = 0.0, dj = 0.0;
+    if (len2 != 0.0)
+      for (int a = 0; a < 3; ++a) {
+        di += (Y[a] - (Fi[3 * a] * xi[0] + Fi[3 * a + 1] * xi[1] + Fi[3 * a + 2] * xi[2])) * Y[a];
+        dj += (Y[a] - (Fj[3 * a] * xi[0] + Fj[3 * a + 1] * xi[1] + Fj[3 * a + 2] * xi[2])) * Y[a];
+      }
+    const double magi = len2 != 0.0 ? ci * di / (fam.refLength[b] * len2) : 0.0;
+    const double magj = len2 != 0.0 ? cj * dj / (fam.refLength[b] * len2) : 0.0;
+    for (int a = 0; a < 3; ++a) {
+      f[a] += (ti[a] + tj[a] + (magi + magj) * Y[a]) * vj;
+      if (!gathers) force[3 * j + a] -= (ti[a] + magi * Y[a]) * fam.volume[i] * frac;
+    }
+  }
+  for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
+}
+
 namespace {
 
 // The hourglass force state of one bond (per V_i V_j), as addHourglassForce computes it.

@@ -174,8 +174,17 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
     const int i = fam.begin + k;
     taus.set(i, tau[k]);
     vm[i] = vonMises(tau[k]);
-    addCorrespondenceForce(fam, i, mul(piolaFromUnrotated(F[k], R[k], tau[k]), Kinv[k]), force);
-    addHourglassForce(fam, i, y, F[k], c, force);
+    const Mat3 A = mul(piolaFromUnrotated(F[k], R[k], tau[k]), Kinv[k]);
+    if (fam.exchange) {  // gather form: completeForce adds the force once every row is on the ghosts
+      double* row = fam.exchange + static_cast<std::size_t>(fam.exchangeStride) * i;
+      std::copy(A.begin(), A.end(), row);
+      std::copy(F[k].begin(), F[k].end(), row + 9);
+      row[18] = c;
+      row[19] = 1.0;
+    } else {
+      addCorrespondenceForce(fam, i, A, force);
+      addHourglassForce(fam, i, y, F[k], c, force);
+    }
     if (stored) {
       // No committed positions yet (the run's first evaluation): no step, no work.
       hgWork[i] = hgWorkN[i] + (fam.yN ? hourglassWork(fam, i, fam.yN, Fs.committedAt(i), y, F[k], c) : 0.0);
@@ -187,6 +196,12 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
       dissipated[i] = dissipatedN[i] + Jmid * fam.volume[i] * ddot(0.5 * (tau[k] + tauN[k]), dp);
     }
   }
+}
+
+int CorrespondenceMaterial::exchangeWidth(const FamilyView&) const { return kGatherRow; }
+
+void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* y, StateStore&, double* force) const {
+  for (int i = fam.begin; i < fam.end; ++i) addGatheredForce(fam, i, y, fam.exchange, fam.exchangeStride, force);
 }
 
 void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {

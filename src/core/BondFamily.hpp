@@ -58,6 +58,11 @@ struct FamilyView {
   // evaluation, 0 if it must respond elastically even past its yield surface; null: every point may (normal
   // runs). Only models with Material::supportsYieldRounds() read it.
   const char* admitted = nullptr;
+  // The two-phase evaluation's buffer (Material::exchangeWidth), exchangeStride values per overlap node:
+  // computeForce writes its owned nodes' rows, the core imports them to the ghosts before completeForce
+  // reads any row. Null: one-pass evaluation.
+  double* exchange = nullptr;
+  int exchangeStride = 0;
 };
 
 inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,

@@ -69,6 +69,15 @@ class Material {
   // option that needs it is refused for a block whose material returns false.
   virtual bool supportsYieldRounds() const { return false; }
 
+  // Two-phase evaluation, for a force summed in gather form (each owned node adds only its own force, from
+  // its neighbours' per-node tensors: the same sums in the same order at any rank count). A model that
+  // returns w > 0 writes w values per owned node to fam.exchange (when the core provides it) in computeForce
+  // and adds no bond force there; the core imports the rows to the ghosts, then calls completeForce, which
+  // adds the whole force density of the owned nodes [fam.begin, fam.end). Without fam.exchange (one-node
+  // drivers, unit tests) computeForce is the one-pass evaluation above.
+  virtual int exchangeWidth(const FamilyView& fam) const { return 0; }
+  virtual void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const {}
+
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;
 };

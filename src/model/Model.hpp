@@ -144,6 +144,9 @@ class Model {
   std::vector<char> admitted_;                  // their admitted plastic set (per owned node)
   FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
+  int exchangeWidth_ = 0;                         // the widest Material::exchangeWidth of the blocks
+  std::vector<double> exchange_, exchangeOwned_;  // per overlap node / owned node, exchangeWidth_ each
+  void exchangeAndComplete();                     // the second phase of internalForce
   std::vector<double> yEvaluated_, yCommitted_;  // positions of the last internalForce and of the last commit
   bool wantsPositions() const;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;

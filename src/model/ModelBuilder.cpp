@@ -82,6 +82,25 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
     }
 }
 
+// A two-phase (gather-form) model takes a bond's reaction with the bond's own omega and partial volume,
+// which holds when both ends have the same horizon (Material::exchangeWidth): such a model shares a body
+// only with blocks of its own horizon.
+void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, const std::string& inputFile) {
+  const BlockSpec* gather = nullptr;
+  for (const auto& kv : blocks)
+    if (kv.second.material->exchangeWidth(FamilyView{}) > 0) gather = &kv.second;
+  if (!gather) return;
+  for (const auto& kv : blocks)
+    if (kv.second.horizon != gather->horizon) {
+      char msg[300];
+      std::snprintf(msg, sizeof msg,
+                    ": Horizon = %g differs from block %s's %g; its correspondence material (%s) sums each bond's "
+                    "force from both ends and needs one horizon across the body",
+                    kv.second.horizon, gather->name.c_str(), gather->horizon, gather->materialName.c_str());
+      throw InputError(inputFile + ": Blocks/" + kv.second.name + msg);
+    }
+}
+
 // A Text File mesh is 3D unless it is flat (every z = 0) and every block's material is 2D: then it is the
 // 2D discretization those materials need (the volumes in the file already hold the thickness).
 void adoptFlatTextMesh(const DiscretizationSpec& spec, PointCloud& cloud, const std::map<int, BlockSpec>& blocks) {
@@ -162,6 +181,8 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
       throw InputError(inputFile + ": Materials/" + kv.second.materialName +
                        ": the discretization is 2D; set 'Plane Stress' or 'Plane Strain' and 'Thickness'");
   }
+
+  requireEqualHorizonsForGatherForms(blocks, inputFile);
 
   std::vector<int> owner = partitionRcb(cloud.x, comm);
   const std::array<double, 3> box = quickGridBox(deck.discretization, horizon.front());  // one block: one horizon
