@@ -22,8 +22,11 @@ class CorrespondenceMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   // Gather form when the core provides FamilyView::exchange (Material::exchangeWidth): each owned node
   // sums its own force from the rows A = P K^-1, F, c of its neighbours, so np 1 and np 2 give the same bits.
+  // Surface Correction = NDO Band (Li & Geng 2024, Eqs. 29-32): the rows also carry P, and band nodes take
+  // the divergence form (addBandForce).
   int exchangeWidth(const FamilyView& fam) const override;
   void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
+  bool supportsSurfaceBand() const override { return true; }
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
   void enableOutput(const std::string& name) const override;

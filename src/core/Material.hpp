@@ -77,6 +77,9 @@ class Material {
   // drivers, unit tests) computeForce is the one-pass evaluation above.
   virtual int exchangeWidth(const FamilyView& fam) const { return 0; }
   virtual void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const {}
+  // Whether the model honours FamilyView's surface band (Surface Correction = NDO Band); a block asking for
+  // it with a model that does not is refused at input.
+  virtual bool supportsSurfaceBand() const { return false; }
 
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;

@@ -27,8 +27,19 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     std::vector<double> owned(m_.begin(), m_.begin() + n);
     layout_->importToOverlap(owned.data(), m_.data(), 1);
   }
+  bool anyBand = false;
+  for (const BlockModel& b : blocks_) anyBand = anyBand || b.surfaceBand;
+  if (anyBand) {
+    std::vector<FamilyView> views;
+    std::vector<bool> planar;
+    for (const BlockModel& b : blocks_) {
+      views.push_back(makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon));
+      planar.push_back(isPlanar(b.material->dimension()));
+    }
+    band_ = std::make_unique<SurfaceBand>(buildSurfaceBand(*layout_, views, planar));
+  }
   for (const BlockModel& b : blocks_) {
-    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+    const FamilyView view = blockView(b);
     b.material->stiffnessBound(view, bound_.data());
     exchangeWidth_ = std::max(exchangeWidth_, b.material->exchangeWidth(view));
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
@@ -140,6 +151,11 @@ FamilyView Model::blockView(const BlockModel& b) const {
   view.time = time_;
   view.startTime = startTime_;
   if (!yCommitted_.empty()) view.yN = yCommitted_.data();
+  if (band_ && b.surfaceBand) {
+    view.band = band_->band.data();
+    view.outerNormal = band_->outerNormal.data();
+    view.layerThickness = band_->layerThickness.data();
+  }
   return view;
 }
 

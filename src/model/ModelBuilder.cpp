@@ -21,6 +21,7 @@ struct BlockSpec {
   double horizon;
   std::shared_ptr<const Material> material;
   double criticalStretch = 0.0;  // 0: no damage model
+  bool ndoBand = false;
 };
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
@@ -42,8 +43,12 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
                        "Hardening and Microelastic");
+    if (g.ndoBand && !materialOf(g.material)->supportsSurfaceBand())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Surface Correction' = 'NDO Band': material '" +
+                       g.material + "' (" + deck.material(g.material).entry->model +
+                       ") has no first Piola stress; the band works with the correspondence models");
     return BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material),
-                     d ? d->criticalStretch : 0.0};
+                     d ? d->criticalStretch : 0.0, g.ndoBand};
   };
   for (const BlockGroupSpec& g : deck.blocks)
     for (int id : g.blockIds) blocks[id] = specOf(g, id);
@@ -199,7 +204,8 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   for (const BlockRange& r : layout->blocks()) {
     const BlockSpec& s = blocks.at(r.blockId);
     blockModels.push_back(
-        BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch});
+        BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
+                   s.ndoBand});
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;
