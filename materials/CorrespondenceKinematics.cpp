@@ -180,6 +180,95 @@ void addHourglassForce(const FamilyView& fam, int i, const double* y, const Mat3
 
 namespace {
 
+// The hourglass term of bond (i, j) at each end, as multiples of Y (addHourglassForce's mag): the term is odd
+// in (Y, xi), so j's end adds c_j (Y - F_j xi) . Y / (|xi| |Y|^2) Y to f_i with the same sign as i's own.
+inline void hourglassBothEnds(const double* Y, const double* xi, const double* Fi, const double* Fj, double ci,
+                              double cj, double refLength, double& magi, double& magj) {
+  const double len2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
+  magi = magj = 0.0;
+  if (len2 == 0.0) return;
+  double di = 0.0, dj = 0.0;
+  for (int a = 0; a < 3; ++a) {
+    di += (Y[a] - (Fi[3 * a] * xi[0] + Fi[3 * a + 1] * xi[1] + Fi[3 * a + 2] * xi[2])) * Y[a];
+    dj += (Y[a] - (Fj[3 * a] * xi[0] + Fj[3 * a + 1] * xi[1] + Fj[3 * a + 2] * xi[2])) * Y[a];
+  }
+  magi = ci * di / (refLength * len2);
+  magj = cj * dj / (refLength * len2);
+}
+
+}  // namespace
+
+void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
+                  double* force) {
+  const double* xi0 = fam.x + 3 * i;
+  const double* yi = y + 3 * i;
+  const double* ri = rows + static_cast<std::size_t>(stride) * i;
+  const double* Pi = ri + kRowP;
+  double f[3] = {0.0, 0.0, 0.0};
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    const double* rj = rows + static_cast<std::size_t>(stride) * j;
+    const double* Pj = rj + kRowP;
+    const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
+    const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
+    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
+    const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
+    double kx[3];  // K_i^-1 xi
+    for (int r = 0; r < 3; ++r) kx[r] = Kinv[3 * r] * xi[0] + Kinv[3 * r + 1] * xi[1] + Kinv[3 * r + 2] * xi[2];
+    double magi, magj;
+    hourglassBothEnds(Y, xi, ri + kRowF, rj + kRowF, ri[kRowC], rj[kRowC], fam.refLength[b], magi, magj);
+    for (int a = 0; a < 3; ++a) {
+      double t = 0.0;
+      for (int c = 0; c < 3; ++c) t += (Pj[3 * a + c] - Pi[3 * a + c]) * kx[c];
+      f[a] += (w * t + (magi + magj) * Y[a]) * vj;
+    }
+  }
+  // Eq. 31's traction term without T_ext (a Pressure condition adds T_ext / dx as its body force): -P_i n / dx.
+  const double* n = fam.outerNormal + 3 * i;
+  const double h = fam.layerThickness[i];
+  if (h > 0.0)
+    for (int a = 0; a < 3; ++a)
+      for (int c = 0; c < 3; ++c) f[a] -= Pi[3 * a + c] * n[c] / h;
+  for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
+}
+
+void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force) {
+  const double* xi0 = fam.x + 3 * i;
+  const double* yi = y + 3 * i;
+  const double* Ai = rows + static_cast<std::size_t>(stride) * i;
+  const double* Fi = Ai + kRowF;
+  const double ci = Ai[kRowC];
+  double f[3] = {0.0, 0.0, 0.0};
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    const double* Aj = rows + static_cast<std::size_t>(stride) * j;
+    const double* Fj = Aj + kRowF;
+    const double cj = Aj[kRowC];
+    const bool gathers = Aj[kRowFlag] != 0.0;
+    const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
+    const double frac = fam.fraction ? fam.fraction[b] : 1.0;
+    const double vj = fam.volume[j] * frac;
+    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
+    const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
+    // Stress: T_i<xi> - T_j<-xi> = omega (A_i + A_j) xi (Foster Eq. 25 at both ends).
+    double ti[3], tj[3];
+    for (int a = 0; a < 3; ++a) {
+      ti[a] = tj[a] = 0.0;
+      for (int s = 0; s < 3; ++s) ti[a] += Ai[3 * a + s] * xi[s], tj[a] += Aj[3 * a + s] * xi[s];
+      ti[a] *= w, tj[a] *= w;
+    }
+    double magi, magj;
+    hourglassBothEnds(Y, xi, Fi, Fj, ci, cj, fam.refLength[b], magi, magj);
+    for (int a = 0; a < 3; ++a) {
+      f[a] += (ti[a] + tj[a] + (magi + magj) * Y[a]) * vj;
+      if (!gathers) force[3 * j + a] -= (ti[a] + magi * Y[a]) * fam.volume[i] * frac;
+    }
+  }
+  for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
+}
+
+namespace {
+
 // The hourglass force state of one bond (per V_i V_j), as addHourglassForce computes it.
 void hourglassBond(const double* Y, const double* xi, const Mat3& F, double c, double refLength, double* T) {
   const double len2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];

@@ -37,6 +37,23 @@ Mat3 piolaFromUnrotated(const Mat3& F, const Mat3& R, const Mat3& tau);
 // Adds the force state T<xi> = omega A xi with A = P K^-1 of owned node i: f_i += T V_j, f_j -= T V_i.
 void addCorrespondenceForce(const FamilyView& fam, int i, const Mat3& A, double* force);
 
+// The same two forces in gather form: owned node i's whole force density from its own family, each bond
+// counted from both ends, f_i += [omega (A_i + A_j) xi + hourglass of both ends] V_j (a neighbour's reaction
+// with the bond's own omega and partial-volume fraction: equal at both ends for equal horizons). rows: per
+// overlap node, stride values A (9), F (9), c (1) and 1 (kGatherRow; a row of zeros marks a node of a
+// one-pass model, which adds its own reactions to i and receives i's as f_j -= T_i V_i). The sums run in
+// the family's order whatever the partition.
+constexpr int kRowA = 0, kRowF = 9, kRowC = 18, kRowFlag = 19, kGatherRow = 20;
+// With the NDO band the row also holds P (9 values, row-major) at kRowP.
+constexpr int kRowP = 20, kBandRow = 29;
+void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force);
+
+// Li & Geng (seed 003) Eqs. 31-32 for owned node i of the surface band (fam.band): the NDO divergence
+// f_i += sum omega (P_j - P_i) K_i^-1 xi V_j, the hourglass term of addGatheredForce, and the traction term
+// -P_i n_i / dx of the outer layer (fam.outerNormal, fam.layerThickness). rows: kBandRow values per node.
+void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
+                  double* force);
+
 // Peridigm's hourglass (zero-energy mode) force of owned node i: per bond, with the deformed bond Y and
 // its affine image F xi, T = c ((Y - F xi) . Y/|Y|) / |xi| Y/|Y|, added as f_i += T V_j, f_j -= T V_i.
 // c = Hourglass Coefficient times the micromodulus of the bond-based solid with the model's bulk

@@ -174,8 +174,19 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
     const int i = fam.begin + k;
     taus.set(i, tau[k]);
     vm[i] = vonMises(tau[k]);
-    addCorrespondenceForce(fam, i, mul(piolaFromUnrotated(F[k], R[k], tau[k]), Kinv[k]), force);
-    addHourglassForce(fam, i, y, F[k], c, force);
+    const Mat3 P = piolaFromUnrotated(F[k], R[k], tau[k]);
+    const Mat3 A = mul(P, Kinv[k]);
+    if (fam.exchange) {  // gather form: completeForce adds the force once every row is on the ghosts
+      double* row = fam.exchange + static_cast<std::size_t>(fam.exchangeStride) * i;
+      std::copy(A.begin(), A.end(), row + kRowA);
+      std::copy(F[k].begin(), F[k].end(), row + kRowF);
+      row[kRowC] = c;
+      row[kRowFlag] = 1.0;
+      if (fam.band) std::copy(P.begin(), P.end(), row + kRowP);
+    } else {
+      addCorrespondenceForce(fam, i, A, force);
+      addHourglassForce(fam, i, y, F[k], c, force);
+    }
     if (stored) {
       // No committed positions yet (the run's first evaluation): no step, no work.
       hgWork[i] = hgWorkN[i] + (fam.yN ? hourglassWork(fam, i, fam.yN, Fs.committedAt(i), y, F[k], c) : 0.0);
@@ -187,6 +198,17 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
       dissipated[i] = dissipatedN[i] + Jmid * fam.volume[i] * ddot(0.5 * (tau[k] + tauN[k]), dp);
     }
   }
+}
+
+int CorrespondenceMaterial::exchangeWidth(const FamilyView& fam) const { return fam.band ? kBandRow : kGatherRow; }
+
+void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* y, StateStore&, double* force) const {
+  for (int i = fam.begin; i < fam.end; ++i)
+    if (fam.band && fam.band[i] != 0.0)
+      addBandForce(fam, i, y, shapeAndGradient(fam, i, fam.x, isPlanar(dim_)).Kinv, fam.exchange, fam.exchangeStride,
+                   force);
+    else
+      addGatheredForce(fam, i, y, fam.exchange, fam.exchangeStride, force);
 }
 
 void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {
@@ -212,6 +234,11 @@ void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound
       h += fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0) / fam.refLength[b];
     }
     bound[i] = 4.0 * C * a * a + 2.0 * c * h;
+    // The band's traction term -P n / dx: P_i moves with u_i and its neighbours by at most C a per unit u.
+    if (fam.outerNormal && fam.layerThickness[i] > 0.0) {
+      const double* nv = fam.outerNormal + 3 * i;
+      bound[i] += 2.0 * C * a * std::sqrt(nv[0] * nv[0] + nv[1] * nv[1] + nv[2] * nv[2]) / fam.layerThickness[i];
+    }
   }
 }
 

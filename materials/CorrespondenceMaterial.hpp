@@ -1,8 +1,8 @@
 #pragma once
 // Base of the correspondence models (Foster, Silling & Chen 2010; Peridigm's CorrespondenceMaterial): per
 // owned node, K and F from its own family, the Flanagan-Taylor rotation, the model's stress update on the
-// unrotated Cauchy stress, P = J sigma F^-T, T<xi> = omega P K^-1 xi and the hourglass force. Each owned node
-// has its whole family, so this is a one-pass evaluation: no neighbour's stress is needed.
+// unrotated Cauchy stress, P = J sigma F^-T, T<xi> = omega P K^-1 xi and the hourglass force. In a model run
+// the force is summed in gather form after the core's exchange of per-node rows; one-pass (scatter) without.
 #include <string>
 #include <vector>
 
@@ -20,6 +20,13 @@ class CorrespondenceMaterial : public Material {
 
   std::vector<StateSpec> stateSpecs() const override;
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
+  // Gather form when the core provides FamilyView::exchange (Material::exchangeWidth): each owned node
+  // sums its own force from the rows A = P K^-1, F, c of its neighbours, so np 1 and np 2 give the same bits.
+  // Surface Correction = NDO Band (Li & Geng 2024, Eqs. 29-32): the rows also carry P, and band nodes take
+  // the divergence form (addBandForce).
+  int exchangeWidth(const FamilyView& fam) const override;
+  void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
+  bool supportsSurfaceBand() const override { return true; }
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
   void enableOutput(const std::string& name) const override;

@@ -58,6 +58,18 @@ struct FamilyView {
   // evaluation, 0 if it must respond elastically even past its yield surface; null: every point may (normal
   // runs). Only models with Material::supportsYieldRounds() read it.
   const char* admitted = nullptr;
+  // Li & Geng's NDO surface band (Surface Correction = NDO Band; model/SurfaceBand.hpp), null without it.
+  // band: per overlap node, 1 within 2 delta of the body's outer layer, else 0. outerNormal: 3 per owned
+  // node, the sum of the outward axis directions the point lacks a lattice neighbour in (0 off the outer
+  // layer); layerThickness: per owned node, that lattice spacing.
+  const double* band = nullptr;
+  const double* outerNormal = nullptr;
+  const double* layerThickness = nullptr;
+  // The two-phase evaluation's buffer (Material::exchangeWidth), exchangeStride values per overlap node:
+  // computeForce writes its owned nodes' rows, the core imports them to the ghosts before completeForce
+  // reads any row. Null: one-pass evaluation.
+  double* exchange = nullptr;
+  int exchangeStride = 0;
 };
 
 inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,

@@ -69,6 +69,18 @@ class Material {
   // option that needs it is refused for a block whose material returns false.
   virtual bool supportsYieldRounds() const { return false; }
 
+  // Two-phase evaluation, for a force summed in gather form (each owned node adds only its own force, from
+  // its neighbours' per-node tensors: the same sums in the same order at any rank count). A model that
+  // returns w > 0 writes w values per owned node to fam.exchange (when the core provides it) in computeForce
+  // and adds no bond force there; the core imports the rows to the ghosts, then calls completeForce, which
+  // adds the whole force density of the owned nodes [fam.begin, fam.end). Without fam.exchange (one-node
+  // drivers, unit tests) computeForce is the one-pass evaluation above.
+  virtual int exchangeWidth(const FamilyView& fam) const { return 0; }
+  virtual void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const {}
+  // Whether the model honours FamilyView's surface band (Surface Correction = NDO Band); a block asking for
+  // it with a model that does not is refused at input.
+  virtual bool supportsSurfaceBand() const { return false; }
+
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;
 };

@@ -29,7 +29,13 @@ std::vector<ParameterSpec> blockSpecs() {
                   "(alone, in one group at most): every block of the discretization that no other group names")
               .need(),
           S::text("Material", "a sub-list name of `Materials`").need(), S::real("Horizon", "horizon δ").need().positive(),
-          S::text("Damage Model", "a sub-list name of `Damage Models`; none: the block's bonds never break")};
+          S::text("Damage Model", "a sub-list name of `Damage Models`; none: the block's bonds never break"),
+          S::text("Surface Correction",
+                  "`NDO Band`: Li & Geng's surface-effect removal for correspondence models (the divergence form "
+                  "within 2δ of the outer layer, traction term on it; docs/materials.md); every block group "
+                  "must give the same")
+              .oneOf({"None", "NDO Band"})
+              .byDefault("None")};
 }
 
 MaterialSpec parseMaterial(const PL& m, const std::string& name, const std::string& file) {
@@ -80,6 +86,10 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
     g.name = blocks.name(it);
     g.material = b.text("Material");
     g.horizon = b.get("Horizon");
+    g.ndoBand = b.text("Surface Correction") == "NDO Band";
+    if (!out.empty() && out.front().ndoBand != g.ndoBand)
+      fail(file, bpath, "'Surface Correction' differs from block group '" + out.front().name +
+                            "' (the band's divergence reads every neighbour's stress: give it to all or none)");
     if (std::find(matNames.begin(), matNames.end(), g.material) == matNames.end())
       fail(file, bpath, "'Material' = '" + g.material + "' is not defined in Materials (defined: " +
                             joinNames(matNames) + ")");

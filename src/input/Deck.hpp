@@ -68,6 +68,7 @@ struct BlockGroupSpec {
   std::string material;               // a MaterialSpec name
   std::string damageModel;            // a DamageModelSpec name; empty: bonds never break
   double horizon = 0.0;
+  bool ndoBand = false;               // Surface Correction = NDO Band (model/SurfaceBand.hpp)
 };
 
 struct NodeSetSpec {

@@ -27,9 +27,21 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     std::vector<double> owned(m_.begin(), m_.begin() + n);
     layout_->importToOverlap(owned.data(), m_.data(), 1);
   }
+  bool anyBand = false;
+  for (const BlockModel& b : blocks_) anyBand = anyBand || b.surfaceBand;
+  if (anyBand) {
+    std::vector<FamilyView> views;
+    std::vector<bool> planar;
+    for (const BlockModel& b : blocks_) {
+      views.push_back(makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon));
+      planar.push_back(isPlanar(b.material->dimension()));
+    }
+    band_ = std::make_unique<SurfaceBand>(buildSurfaceBand(*layout_, views, planar));
+  }
   for (const BlockModel& b : blocks_) {
-    FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+    const FamilyView view = blockView(b);
     b.material->stiffnessBound(view, bound_.data());
+    exchangeWidth_ = std::max(exchangeWidth_, b.material->exchangeWidth(view));
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
     for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);
   }
@@ -44,6 +56,8 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
   uOverlap_.assign(3 * no, 0.0);
   yOverlap_.assign(3 * no, 0.0);
   fOverlap_.assign(3 * no, 0.0);
+  exchange_.assign(no * exchangeWidth_, 0.0);
+  exchangeOwned_.assign(static_cast<std::size_t>(n) * exchangeWidth_, 0.0);
   prescribed_.assign(3 * static_cast<std::size_t>(n), 0);
   // A planar model has no out-of-plane motion: z stays 0 and is never a free unknown of any solver.
   for (const BlockModel& b : blocks_)
@@ -53,6 +67,8 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
 
 FamilyView Model::view(const BlockModel& b) {
   FamilyView v = blockView(b);
+  // Each model writes the rows of its own owned nodes (blocks own disjoint node ranges).
+  if (exchangeWidth_ > 0) v.exchange = exchange_.data(), v.exchangeStride = exchangeWidth_;
   if (b.criticalStretch > 0.0) {  // else brokenN stays null: the kernels' undamaged path
     v.brokenN = rounds_ ? baseBroken_.data() : state_.committed("Bond_Damage");
     v.brokenCountN = rounds_ ? baseCount_.data() : state_.committed("Broken_Bonds");
@@ -98,8 +114,19 @@ void Model::internalForce(const double* u, double* f) {
   collectively(layout_->comm(), [&] {
     for (const BlockModel& b : blocks_) b.material->computeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
   });
+  if (exchangeWidth_ > 0) exchangeAndComplete();
   layout_->exportAdd(fOverlap_.data(), f, 3);
   if (wantsPositions()) yEvaluated_ = yOverlap_;
+}
+
+// Phase 2 of a two-phase evaluation (Material::exchangeWidth): the owned rows the models wrote go to the
+// ghosts, then each model adds the force of its owned nodes. completeForce only sums (no constitutive
+// update), so nothing here fails on one rank only.
+void Model::exchangeAndComplete() {
+  std::copy(exchange_.begin(), exchange_.begin() + static_cast<long>(exchangeOwned_.size()), exchangeOwned_.begin());
+  layout_->importToOverlap(exchangeOwned_.data(), exchange_.data(), exchangeWidth_);
+  for (const BlockModel& b : blocks_)
+    if (b.material->exchangeWidth(blockView(b)) > 0) b.material->completeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
 }
 
 bool Model::wantsPositions() const {
@@ -124,6 +151,11 @@ FamilyView Model::blockView(const BlockModel& b) const {
   view.time = time_;
   view.startTime = startTime_;
   if (!yCommitted_.empty()) view.yN = yCommitted_.data();
+  if (band_ && b.surfaceBand) {
+    view.band = band_->band.data();
+    view.outerNormal = band_->outerNormal.data();
+    view.layerThickness = band_->layerThickness.data();
+  }
   return view;
 }
 

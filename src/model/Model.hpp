@@ -10,6 +10,7 @@
 #include "core/Material.hpp"
 #include "core/StateStore.hpp"
 #include "model/RigidWall.hpp"
+#include "model/SurfaceBand.hpp"
 
 namespace pf {
 
@@ -24,6 +25,7 @@ struct BlockModel {
   int begin = 0, end = 0;
   std::shared_ptr<const Material> material;
   double criticalStretch = 0.0;  // the block's Critical Stretch damage model; 0: no damage model (nothing breaks)
+  bool surfaceBand = false;      // Surface Correction = NDO Band (model/SurfaceBand.hpp)
 };
 
 // A displacement, velocity or body-force component imposed on owned nodes: value(x, t), times factor[k]
@@ -129,6 +131,9 @@ class Model {
   // 3 per wall: this rank's share of each wall's force on the body in the last enforced step (0 before).
   const std::vector<double>& wallReactions() const { return wallReaction_; }
 
+  // The NDO surface band's geometry (outer normals per owned node), or null when no block has the band.
+  const SurfaceBand* surfaceBand() const { return band_.get(); }
+
   double sum(double v) const { return layout_->sum(v); }
   double max(double v) const { return layout_->max(v); }
 
@@ -144,6 +149,10 @@ class Model {
   std::vector<char> admitted_;                  // their admitted plastic set (per owned node)
   FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
+  std::unique_ptr<SurfaceBand> band_;             // null: no block has the NDO band
+  int exchangeWidth_ = 0;                         // the widest Material::exchangeWidth of the blocks
+  std::vector<double> exchange_, exchangeOwned_;  // per overlap node / owned node, exchangeWidth_ each
+  void exchangeAndComplete();                     // the second phase of internalForce
   std::vector<double> yEvaluated_, yCommitted_;  // positions of the last internalForce and of the last commit
   bool wantsPositions() const;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_;

@@ -21,6 +21,7 @@ struct BlockSpec {
   double horizon;
   std::shared_ptr<const Material> material;
   double criticalStretch = 0.0;  // 0: no damage model
+  bool ndoBand = false;
 };
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
@@ -42,8 +43,12 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
                        "Hardening and Microelastic");
+    if (g.ndoBand && !materialOf(g.material)->supportsSurfaceBand())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Surface Correction' = 'NDO Band': material '" +
+                       g.material + "' (" + deck.material(g.material).entry->model +
+                       ") has no first Piola stress; the band works with the correspondence models");
     return BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material),
-                     d ? d->criticalStretch : 0.0};
+                     d ? d->criticalStretch : 0.0, g.ndoBand};
   };
   for (const BlockGroupSpec& g : deck.blocks)
     for (int id : g.blockIds) blocks[id] = specOf(g, id);
@@ -79,6 +84,25 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
       std::snprintf(msg, sizeof msg, ": Horizon = %g is smaller than the grid spacing %g: no point would have a bond",
                     g.horizon, cloud.spacing);
       throw InputError(deck.file + ": Blocks/" + g.name + msg);
+    }
+}
+
+// A two-phase (gather-form) model takes a bond's reaction with the bond's own omega and partial volume,
+// which holds when both ends have the same horizon (Material::exchangeWidth): such a model shares a body
+// only with blocks of its own horizon.
+void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, const std::string& inputFile) {
+  const BlockSpec* gather = nullptr;
+  for (const auto& kv : blocks)
+    if (kv.second.material->exchangeWidth(FamilyView{}) > 0) gather = &kv.second;
+  if (!gather) return;
+  for (const auto& kv : blocks)
+    if (kv.second.horizon != gather->horizon) {
+      char msg[300];
+      std::snprintf(msg, sizeof msg,
+                    ": Horizon = %g differs from block %s's %g; its correspondence material (%s) sums each bond's "
+                    "force from both ends and needs one horizon across the body",
+                    kv.second.horizon, gather->name.c_str(), gather->horizon, gather->materialName.c_str());
+      throw InputError(inputFile + ": Blocks/" + kv.second.name + msg);
     }
 }
 
@@ -163,6 +187,8 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
                        ": the discretization is 2D; set 'Plane Stress' or 'Plane Strain' and 'Thickness'");
   }
 
+  requireEqualHorizonsForGatherForms(blocks, inputFile);
+
   std::vector<int> owner = partitionRcb(cloud.x, comm);
   const std::array<double, 3> box = quickGridBox(deck.discretization, horizon.front());  // one block: one horizon
   auto layout = std::make_unique<DistributedLayout>(comm, cloud.x, owner, horizon, cloud.block, cloud.influence,
@@ -178,7 +204,8 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   for (const BlockRange& r : layout->blocks()) {
     const BlockSpec& s = blocks.at(r.blockId);
     blockModels.push_back(
-        BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch});
+        BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
+                   s.ndoBand});
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;

@@ -35,6 +35,18 @@ void inwardDirection(const Model& model, int i, double d[3], const std::string& 
   for (int c = 0; c < 3; ++c) d[c] = s[c] / norm;
 }
 
+// With the NDO band (Li & Geng Eq. 31) the outer layer's traction term is -P n / dx with n the sum of the
+// point's missing axis directions, so the load must be T_ext / dx = -p n / dx with the same n, or a uniform
+// stress is not in balance: at a corner of a flat face only the face's own axis counts (the axes in which
+// the set has no extent: a corner of Min X is pushed along x alone); on a curved set (a staircase) every
+// missing axis is an exposed cell face the pressure acts on. False (d untouched) off the outer layer.
+bool bandDirection(const SurfaceBand& band, int i, const bool flat[3], bool anyFlat, double d[3]) {
+  const double* n = &band.outerNormal[3 * i];
+  if (n[0] == 0.0 && n[1] == 0.0 && n[2] == 0.0) return false;
+  for (int c = 0; c < 3; ++c) d[c] = anyFlat && !flat[c] ? 0.0 : -n[c];
+  return true;
+}
+
 }  // namespace
 
 std::vector<NodalLoad> pressureLoads(const Model& model, const std::vector<int>& nodes,
@@ -45,10 +57,20 @@ std::vector<NodalLoad> pressureLoads(const Model& model, const std::vector<int>&
     loads[c].coordinate = c;
     loads[c].value = pressure;
   }
+  // The axes in which the whole set is flat (reference extent below a quarter layer): collective.
+  const std::vector<double>& x = model.coordinates();
+  bool flat[3], anyFlat = false;
+  for (int c = 0; c < 3; ++c) {
+    double lo = HUGE_VAL, hi = -HUGE_VAL;
+    for (int i : nodes) lo = std::fmin(lo, x[3 * i + c]), hi = std::fmax(hi, x[3 * i + c]);
+    flat[c] = model.max(hi) + model.max(-lo) <= 0.25 * layerThickness;
+    anyFlat = anyFlat || flat[c];
+  }
+  const SurfaceBand* band = model.surfaceBand();
   collectively(model.layout().comm(), [&] {
     for (int i : nodes) {
       double d[3];
-      inwardDirection(model, i, d, context);
+      if (!band || !bandDirection(*band, i, flat, anyFlat, d)) inwardDirection(model, i, d, context);
       for (int c = 0; c < 3; ++c) {
         if (d[c] == 0.0) continue;  // a component that is exactly zero costs nothing to skip
         loads[c].nodes.push_back(i);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 
@@ -25,6 +26,12 @@ struct DistributedLayout::Transfers {
   std::unique_ptr<Epetra_BlockMap> owned[2], overlap[2], root[2];
   std::unique_ptr<Epetra_Import> import[2], rootImport[2];
   std::unique_ptr<Epetra_Export> exporter[2];
+  // Imports of other widths (a two-phase model's per-node rows), built on first use.
+  struct Wide {
+    std::unique_ptr<Epetra_BlockMap> owned, overlap;
+    std::unique_ptr<Epetra_Import> import;
+  };
+  mutable std::map<int, Wide> wide;
 };
 
 DistributedLayout::~DistributedLayout() = default;
@@ -56,6 +63,33 @@ std::vector<int> ghostCandidates(const std::vector<double>& coords, const std::v
   }
   std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
   return candidates;
+}
+
+// Each row of family sorted by (key, cloud index) of its neighbours, cloud(local) naming a local index's point;
+// refLength and fraction (the per-bond arrays set so far) follow their bonds.
+template <class CloudIndex>
+void sortRows(BondFamily& family, CloudIndex cloud, const std::vector<std::uint64_t>& key) {
+  std::vector<int> order, nb;
+  std::vector<double> len, frac;
+  const bool partial = !family.fraction.empty();
+  for (int i = 0; i < family.numOwned(); ++i) {
+    const int b0 = family.offsets[i], b1 = family.offsets[i + 1];
+    order.resize(b1 - b0);
+    std::iota(order.begin(), order.end(), b0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+      const int pa = cloud(family.neighbors[a]), pb = cloud(family.neighbors[b]);
+      return key[pa] != key[pb] ? key[pa] < key[pb] : pa < pb;
+    });
+    nb.clear(), len.clear(), frac.clear();
+    for (int b : order) {
+      nb.push_back(family.neighbors[b]);
+      len.push_back(family.refLength[b]);
+      if (partial) frac.push_back(family.fraction[b]);
+    }
+    std::copy(nb.begin(), nb.end(), family.neighbors.begin() + b0);
+    std::copy(len.begin(), len.end(), family.refLength.begin() + b0);
+    if (partial) std::copy(frac.begin(), frac.end(), family.fraction.begin() + b0);
+  }
 }
 
 // omega of every bond from its length and its owner's horizon h. Partial-volume bonds may reach half a
@@ -103,10 +137,14 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
   buildFamilies(pts, numOwned_, h, family_, cell, box);
+  // Rows in a global order (Hilbert key, then cloud index) instead of local index order, where a point's
+  // on-rank neighbours precede its ghosts: family sums then run in the same order at every rank count.
+  const int nOwned = numOwned_;
+  sortRows(family_, [&](int local) { return local < nOwned ? owned[local] : candidates[local - nOwned]; }, key);
   // A user-defined influence function can fail (not finite) at some bonds, so on some ranks only.
   collectively(comm_, [&] { setInfluence(family_, h, influence, cell != nullptr); });
 
-  // Keep only candidates that some bond reaches; candidate order is preserved so rows stay sorted.
+  // Keep only candidates that some bond reaches, in candidate (Hilbert) order.
   std::vector<int> ghostIndex(candidates.size(), -1);
   for (int j : family_.neighbors)
     if (j >= numOwned_) ghostIndex[j - numOwned_] = 0;
@@ -149,10 +187,25 @@ void DistributedLayout::buildTransfers() {
 }
 
 void DistributedLayout::importToOverlap(const double* owned, double* overlap, int ncomp) const {
-  const int k = ncomp == 3 ? 1 : 0;
-  Epetra_Vector src(View, *transfers_->owned[k], const_cast<double*>(owned));
-  Epetra_Vector dst(View, *transfers_->overlap[k], overlap);
-  if (dst.Import(src, *transfers_->import[k], Insert) != 0) throw std::runtime_error("Epetra Import to ghosts failed");
+  const Epetra_BlockMap *ownedMap, *overlapMap;
+  const Epetra_Import* import;
+  if (ncomp == 1 || ncomp == 3) {
+    const int k = ncomp == 3 ? 1 : 0;
+    ownedMap = transfers_->owned[k].get(), overlapMap = transfers_->overlap[k].get();
+    import = transfers_->import[k].get();
+  } else {
+    Transfers::Wide& w = transfers_->wide[ncomp];
+    if (!w.import) {  // every rank asks for the same width at the same call: the construction is collective
+      const Epetra_MpiComm& ecomm = comm_.impl().epetra;
+      w.owned.reset(new Epetra_BlockMap(-1, numOwned_, gids_.data(), ncomp, 0, ecomm));
+      w.overlap.reset(new Epetra_BlockMap(-1, numOverlap(), gids_.data(), ncomp, 0, ecomm));
+      w.import.reset(new Epetra_Import(*w.overlap, *w.owned));
+    }
+    ownedMap = w.owned.get(), overlapMap = w.overlap.get(), import = w.import.get();
+  }
+  Epetra_Vector src(View, *ownedMap, const_cast<double*>(owned));
+  Epetra_Vector dst(View, *overlapMap, overlap);
+  if (dst.Import(src, *import, Insert) != 0) throw std::runtime_error("Epetra Import to ghosts failed");
 }
 
 void DistributedLayout::exportAdd(const double* overlap, double* owned, int ncomp) const {

@@ -41,7 +41,8 @@ class DistributedLayout {
   int rank() const { return comm_.rank(); }
   int size() const { return comm_.size(); }
 
-  // overlap[0, ncomp*numOwned) = owned; ghosts filled from their owners.
+  // overlap[0, ncomp*numOwned) = owned; ghosts filled from their owners. Collective; the first call with a
+  // width other than 1 or 3 builds that width's transfer.
   void importToOverlap(const double* owned, double* overlap, int ncomp) const;
   // owned = sum over ranks of overlap contributions to each owned point (owned entries included).
   void exportAdd(const double* overlap, double* owned, int ncomp) const;

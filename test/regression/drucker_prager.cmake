@@ -59,3 +59,34 @@ periforge_check(drucker_biaxial_coarse_lbc_surface_np1_check "drucker_biaxial_co
   ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_lbc_surface_np1/biaxial_test2_coarse_lbc_surface.e
   --max-violations 0 --against ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_np1/biaxial_test2_coarse.e
   --expect first_past=-1:0 --expect asym_first=-1:0)
+
+# NDO surface band (Blocks 'Surface Correction' = NDO Band; biaxial_test2_coarse_band.xml, Hourglass Coefficient 0.25:
+# below 0.2 the band's linearised force has a growing mode, test_surface_band). With the band the end state is
+# uniform: every point's end von Mises within 1 % of the analytic value of the deck's load (its Pressure is a dead
+# load on the reference area, so the true confinement at the end is -P / F_yy = -640.7 kPa and the analytic von
+# Mises 246.40 kPa; measured -0.17 % at every point, spread 0.01 kPa, against 74..316 kPa without the band's
+# pressure corner rule and 265.53 kPa at the centre without the band); the centre yields at 0.0011091 within 5 %
+# (measured -0.10 %); np 2 against np 1 within the ADR tolerance (np_agreement_band.comp). 12 s at np 1.
+foreach(np 1 2)
+  periforge_run(drucker_biaxial_coarse_band_np${np} ${DPEX}/biaxial_test2_coarse_band.xml ${np})
+  periforge_check(drucker_biaxial_coarse_band_np${np}_check drucker_biaxial_coarse_band_np${np}
+    ${PY} ${DPEX}/biaxial_history.py
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_band_np${np}/biaxial_test2_coarse_band.csv
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_band_np${np}/biaxial_test2_coarse_band.e
+    --yield-bound 0.05 --all-bound 0.01)
+endforeach()
+periforge_check(drucker_biaxial_coarse_band_np1_vs_np2 "drucker_biaxial_coarse_band_np1;drucker_biaxial_coarse_band_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_band_np2/biaxial_test2_coarse_band.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_biaxial_coarse_band_np1/biaxial_test2_coarse_band.e
+  ${REG}/drucker_prager/np_agreement_band.comp)
+
+# Elastic uniaxial compression with the band (Li & Geng Sec. 5.1; make_uniaxial.py: 18 x 36 points, roller bottom so
+# that the exact solution is uniform): every point's sigma_yy within 1 % of the interior mean and |sigma_xx| within
+# 1 % of it (the issue's bound). Measured 0.000 % (the affine state is exact with the band; the interior mean is the
+# exact -p / F_xx to 1e-5 relative); without the band (uniaxial_elastic.xml, not a ctest) the outer layer departs up
+# to 83 % and sigma_xx reaches 112 % of sigma_yy (examples/drucker_prager/README.md). 14 s at np 1.
+periforge_run(drucker_uniaxial_band_np1 ${DPEX}/uniaxial_elastic_band.xml 1)
+periforge_check(drucker_uniaxial_band_np1_check drucker_uniaxial_band_np1
+  ${PY} ${DPEX}/uniaxial_check.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_uniaxial_band_np1/uniaxial_elastic_band.e --bound 0.01)
