@@ -14,6 +14,7 @@
 #include "HistoryWriter.hpp"
 #include "OutputFiles.hpp"
 #include "core/InputError.hpp"
+#include "parallel/ChunkedGather.hpp"
 #include "parallel/Collective.hpp"
 
 namespace pf {
@@ -56,15 +57,19 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   addReactions(out);
   applied_ = out.appliedDisplacement;
   bodyForce_.assign(model_.numDofs(), 0.0);
+  if (exodus_ && !(nodalVectors_.empty() && elementScalars_.empty()))
+    gather_ = std::make_unique<ChunkedGather>(model_.layout().comm(), model_.layout().gids().data(), model_.numOwned(),
+                                              model_.layout().numGlobal());
   onRoot([&] { openFiles(); });
 }
 
 // Collective: rank 0 runs write; its failure (a full disk, a missing directory) becomes every rank's error,
 // naming the deck and the output list.
-void OutputManager::onRoot(const std::function<void()>& write) {
+// everyRank: every rank runs write (a collective write, rank 0 writing the file).
+void OutputManager::onRoot(const std::function<void()>& write, bool everyRank) {
   const bool root = model_.layout().rank() == 0;
   collectively(model_.layout().comm(), [&] {
-    if (!root) return;
+    if (!root && !everyRank) return;
     try {
       write();
     } catch (const InputError&) {
@@ -295,7 +300,7 @@ std::vector<double> OutputManager::historyRow(const StepReport& report, const st
   return global;
 }
 
-// Collective: the fields are gathered to rank 0, which writes them.
+// Collective: rank 0 writes the fields as they arrive, a chunk at a time.
 void OutputManager::writeExodusStep(double time, const std::vector<double>& u, const std::vector<double>& v,
                                     const std::vector<double>& f) {
   std::map<std::string, double> globals;
@@ -311,16 +316,28 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
     }
     globals[var] = model_.sum(e);
   }
-  std::map<std::string, std::vector<double>> vectors, scalars, none;
-  for (const std::string& var : nodalVectors_) {
-    std::vector<double> owned = ownedField(var, 3, u, v, f);
-    vectors[var] = model_.layout().gatherToRoot(owned.data(), 3);
+  // Each rank's own values of every field, then rank 0 writes them chunk by chunk in cloud order
+  // (parallel/ChunkedGather.hpp): it never holds a whole field.
+  std::vector<std::vector<double>> owned;
+  for (const std::string& var : nodalVectors_) owned.push_back(ownedField(var, 3, u, v, f));
+  for (const std::string& var : elementScalars_) owned.push_back(ownedField(var, 1, u, v, f));
+  if (owned.empty()) {  // globals only: Peridigm's one-dummy-node file
+    onRoot([&] { writer_->writeStep(time, {}, {}, {}, globals); });
+    return;
   }
-  for (const std::string& var : elementScalars_) {
-    std::vector<double> owned = ownedField(var, 1, u, v, f);
-    scalars[exodusName(var)] = model_.layout().gatherToRoot(owned.data(), 1);
-  }
-  onRoot([&] { writer_->writeStep(time, vectors, none, scalars, globals); });
+  std::vector<ChunkedGather::Field> fields;
+  for (std::size_t k = 0; k < owned.size(); ++k) fields.push_back({owned[k].data(), k < nodalVectors_.size() ? 3 : 1});
+  const std::size_t nv = nodalVectors_.size();
+  const int numGlobal = gather_->numGlobal();
+  onRoot(
+      [&] {
+        gather_->gather(fields, [&](int begin, int count, const std::vector<const double*>& values) {
+          if (begin == 0) writer_->beginStep(time);
+          writer_->writeNodes(begin, count, {values.begin(), values.begin() + nv}, {}, {values.begin() + nv, values.end()});
+          if (begin + count == numGlobal) writer_->endStep(globals);
+        });
+      },
+      true);
 }
 
 void OutputManager::saveTo(CheckpointData& data) const {
