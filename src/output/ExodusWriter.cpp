@@ -83,12 +83,11 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
   checkNames(filename, elementNames_, "element");
   checkNames(filename, globalNames_, "global");
 
-  for (int b : blockIdPerNode) {
+  for (int b : blockIdPerNode) {  // the distinct ids, sorted (a few: no copy of the whole list)
     if (b < 1) throw std::runtime_error("ExodusWriter(" + filename + "): block ids must be >= 1");
+    const auto at = std::lower_bound(blockIds_.begin(), blockIds_.end(), b);
+    if (at == blockIds_.end() || *at != b) blockIds_.insert(at, b);
   }
-  blockIds_ = blockIdPerNode;
-  std::sort(blockIds_.begin(), blockIds_.end());
-  blockIds_.erase(std::unique(blockIds_.begin(), blockIds_.end()), blockIds_.end());
   blockSizes_.assign(blockIds_.size(), 0);
   for (std::size_t n = 0; n < numNodes_; ++n) {
     const auto b = static_cast<std::size_t>(
@@ -101,11 +100,10 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
   if (append)
     openToAppend(nodalNames);
   else
-    create(coords, blockIdPerNode, nodalNames);
+    create(coords, nodalNames);
 }
 
-void ExodusWriter::create(const std::vector<double>& coords, const std::vector<int>& blockIdPerNode,
-                          const std::vector<std::string>& nodalNames) {
+void ExodusWriter::create(const std::vector<double>& coords, const std::vector<std::string>& nodalNames) {
   // Peridigm's gold files are netCDF-3 64-bit-offset with 8-byte reals; match that so that
   // tools reading either file see the same format.
   int cpuWordSize = sizeof(double), ioWordSize = sizeof(double);
@@ -119,7 +117,7 @@ void ExodusWriter::create(const std::vector<double>& coords, const std::vector<i
           "ex_put_init");
 
     putCoordinates(coords);
-    putBlocks(blockIdPerNode);
+    putBlocks();
     if (!nodalNames.empty()) putVariableNames(EX_NODAL, nodalNames, "nodal");
     if (!elementNames_.empty()) {
       putVariableNames(EX_ELEM_BLOCK, elementNames_, "element");
@@ -182,22 +180,23 @@ void ExodusWriter::putCoordinates(const std::vector<double>& coords) const {
 
 // Nodes keep their global order (local index = global id - 1); elements are renumbered block by block
 // by Exodus, so the element number map carries the global id back. One block's connectivity at a time.
-void ExodusWriter::putBlocks(const std::vector<int>& blockIdPerNode) const {
+void ExodusWriter::putBlocks() const {
   std::vector<int> ids;
-  int64_t firstElement = 1;
-  for (std::size_t b = 0; b < blockIds_.size(); ++b) {
-    const auto size = static_cast<int64_t>(blockSizes_[b]);
-    check(ex_put_block(exoid_, EX_ELEM_BLOCK, blockIds_[b], "SPHERE", size, 1, 0, 0, 0), "ex_put_block");
+  auto blockNodes = [&](std::size_t b) {  // the nodes of block b in node order, 1-based
     ids.clear();
     for (const Run& r : runs_)
       if (r.b == b)
         for (std::size_t n = r.begin; n < r.end; ++n) ids.push_back(static_cast<int>(n) + 1);
+  };
+  for (std::size_t b = 0; b < blockIds_.size(); ++b) {
+    check(ex_put_block(exoid_, EX_ELEM_BLOCK, blockIds_[b], "SPHERE", static_cast<int64_t>(blockSizes_[b]), 1, 0, 0, 0),
+          "ex_put_block");
+    blockNodes(b);
     check(ex_put_conn(exoid_, EX_ELEM_BLOCK, blockIds_[b], ids.data(), nullptr, nullptr), "ex_put_conn");
     const std::string name = "block_" + std::to_string(blockIds_[b]);
     check(ex_put_name(exoid_, EX_ELEM_BLOCK, blockIds_[b], name.c_str()), "ex_put_name");
-    check(ex_put_partial_id_map(exoid_, EX_ELEM_MAP, firstElement, size, ids.data()), "ex_put_partial_id_map(elements)");
-    firstElement += size;
   }
+  // The node map, then the element map (the order the file's variables are defined in).
   for (std::size_t begin = 0; begin < numNodes_; begin += kPiece) {
     const std::size_t count = std::min(kPiece, numNodes_ - begin);
     ids.resize(count);
@@ -205,6 +204,13 @@ void ExodusWriter::putBlocks(const std::vector<int>& blockIdPerNode) const {
     check(ex_put_partial_id_map(exoid_, EX_NODE_MAP, static_cast<int64_t>(begin) + 1, static_cast<int64_t>(count),
                                 ids.data()),
           "ex_put_partial_id_map(nodes)");
+  }
+  int64_t firstElement = 1;
+  for (std::size_t b = 0; b < blockIds_.size(); ++b) {
+    blockNodes(b);
+    const auto size = static_cast<int64_t>(blockSizes_[b]);
+    check(ex_put_partial_id_map(exoid_, EX_ELEM_MAP, firstElement, size, ids.data()), "ex_put_partial_id_map(elements)");
+    firstElement += size;
   }
 }
 

@@ -57,10 +57,9 @@ class ExodusWriter {
   void check(int status, const char* what) const;
   // Declares the variables of one kind (entityType: an ex_entity_type, e.g. EX_NODAL) and their names.
   void putCoordinates(const std::vector<double>& coords) const;
-  void putBlocks(const std::vector<int>& blockIdPerNode) const;
+  void putBlocks() const;
   void putVariableNames(int entityType, std::vector<std::string> names, const std::string& what) const;
-  void create(const std::vector<double>& coords, const std::vector<int>& blockIdPerNode,
-              const std::vector<std::string>& nodalNames);
+  void create(const std::vector<double>& coords, const std::vector<std::string>& nodalNames);
   void openToAppend(const std::vector<std::string>& nodalNames);
 
   std::string filename_;
