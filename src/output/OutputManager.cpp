@@ -253,14 +253,6 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   return model_.state().committed(var)[i];
 }
 
-std::vector<double> OutputManager::ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
-                                              const std::vector<double>& v, const std::vector<double>& f) const {
-  std::vector<double> out(static_cast<std::size_t>(ncomp) * model_.numOwned());
-  for (int i = 0; i < model_.numOwned(); ++i)
-    for (int c = 0; c < ncomp; ++c) out[ncomp * i + c] = nodeValue(var, c, i, u, v, f);
-  return out;
-}
-
 void OutputManager::onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
                            const std::vector<double>& f) {
   ++count_;
@@ -316,17 +308,17 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
     }
     globals[var] = model_.sum(e);
   }
-  // Each rank's own values of every field, then rank 0 writes them chunk by chunk in cloud order
-  // (parallel/ChunkedGather.hpp): it never holds a whole field.
-  std::vector<std::vector<double>> owned;
-  for (const std::string& var : nodalVectors_) owned.push_back(ownedField(var, 3, u, v, f));
-  for (const std::string& var : elementScalars_) owned.push_back(ownedField(var, 1, u, v, f));
-  if (owned.empty()) {  // globals only: Peridigm's one-dummy-node file
+  // Rank 0 writes the fields chunk by chunk in cloud order as the ranks send their points' values, taken
+  // straight from the model (parallel/ChunkedGather.hpp): no rank copies a whole field, not even its share.
+  std::vector<ChunkedGather::Field> fields;
+  for (const std::string& var : nodalVectors_)
+    fields.push_back({[&, var](int i, double* out) { for (int c = 0; c < 3; ++c) out[c] = nodeValue(var, c, i, u, v, f); }, 3});
+  for (const std::string& var : elementScalars_)
+    fields.push_back({[&, var](int i, double* out) { *out = nodeValue(var, 0, i, u, v, f); }, 1});
+  if (fields.empty()) {  // globals only: Peridigm's one-dummy-node file
     onRoot([&] { writer_->writeStep(time, {}, {}, {}, globals); });
     return;
   }
-  std::vector<ChunkedGather::Field> fields;
-  for (std::size_t k = 0; k < owned.size(); ++k) fields.push_back({owned[k].data(), k < nodalVectors_.size() ? 3 : 1});
   const std::size_t nv = nodalVectors_.size();
   const int numGlobal = gather_->numGlobal();
   onRoot(

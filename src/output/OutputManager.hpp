@@ -80,8 +80,6 @@ class OutputManager : public StepObserver {
                        const std::vector<double>& f);
   double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
                    const std::vector<double>& f) const;
-  std::vector<double> ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
-                                 const std::vector<double>& v, const std::vector<double>& f) const;
 
   Problem& pb_;
   Model& model_;

@@ -75,8 +75,7 @@ void ChunkedGather::sendChunks(const std::vector<Field>& fields, int nvals) cons
     double* out = msg.data();
     for (int e = b; e < b + m; ++e) *out++ = offsetInChunk_[e];
     for (const Field& f : fields)
-      for (int e = b; e < b + m; ++e)
-        for (int c = 0; c < f.ncomp; ++c) *out++ = f.owned[static_cast<std::size_t>(f.ncomp) * order_[e] + c];
+      for (int e = b; e < b + m; ++e, out += f.ncomp) f.values(order_[e], out);
     MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_DOUBLE, 0, kTag, comm_.impl().mpi);
   }
 }
@@ -93,8 +92,7 @@ void ChunkedGather::receiveChunks(const std::vector<Field>& fields, int nvals, c
     for (std::size_t f = 0; f < fields.size(); ++f) {  // own points straight from the field
       const int nc = fields[f].ncomp;
       for (int e = chunkStart_[k]; e < chunkStart_[k + 1]; ++e)
-        std::copy_n(fields[f].owned + static_cast<std::size_t>(nc) * order_[e], nc,
-                    buf[f].data() + static_cast<std::size_t>(nc) * offsetInChunk_[e]);
+        fields[f].values(order_[e], buf[f].data() + static_cast<std::size_t>(nc) * offsetInChunk_[e]);
     }
     for (int r = 1; r < size; ++r) {
       const int m = counts_[static_cast<std::size_t>(k) * size + r];

@@ -16,8 +16,10 @@ class ChunkedGather {
   // hundreds of kB, far past MPI's eager limit, so per-chunk latency costs nothing next to the data.
   static constexpr int kDefaultChunkPoints = 32768;
 
+  // A field's ncomp values of owned point `local` (owned-local index) into out: asked for as each chunk is
+  // packed, so no rank makes a copy of its whole share either.
   struct Field {
-    const double* owned;  // ncomp values per owned point, owned-local order
+    std::function<void(int local, double* out)> values;
     int ncomp;
   };
   // values[f]: fields[f].ncomp * count doubles for cloud indices [begin, begin + count) (rank 0 only).

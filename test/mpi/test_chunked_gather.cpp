@@ -32,6 +32,10 @@ double value(int g, int c, int step) { return 1000.0 * step + 10.0 * g + c + 0.1
 struct Share {
   std::vector<int> gids;  // owned, in descending cloud order (the gather must sort)
   std::vector<double> vec, scalar;
+  std::vector<pf::ChunkedGather::Field> fields() const {
+    return {{[this](int i, double* out) { std::copy_n(vec.data() + 3 * i, 3, out); }, 3},
+            {[this](int i, double* out) { *out = scalar[i]; }, 1}};
+  }
 };
 
 Share share(const pf::Communicator& comm, int step) {
@@ -73,7 +77,7 @@ TEST(ChunkedGather, ChunksArriveInOrderWithEveryValue) {
   EXPECT_EQ(gather.numChunks(), 9);
   for (int pass = 0; pass < 2; ++pass) {  // the pattern is reused
     int next = 0, calls = 0;
-    gather.gather({{s.vec.data(), 3}, {s.scalar.data(), 1}},
+    gather.gather(s.fields(),
                   [&](int begin, int count, const std::vector<const double*>& v) {
                     EXPECT_EQ(comm.rank(), 0);
                     EXPECT_EQ(begin, next);
@@ -110,7 +114,7 @@ TEST(ChunkedGather, ChunkedExodusEqualsWholeFieldExodus) {
   for (int step = 0; step < 3; ++step) {
     const Share s = share(comm, step);
     const std::map<std::string, double> globals{{"E", 0.5 * step}};
-    gather.gather({{s.vec.data(), 3}, {s.scalar.data(), 1}},
+    gather.gather(s.fields(),
                   [&](int begin, int count, const std::vector<const double*>& v) {
                     if (begin == 0) chunked->beginStep(0.1 * step);
                     chunked->writeNodes(begin, count, {v[0]}, {}, {v[1]});
@@ -141,7 +145,7 @@ TEST(ChunkedGather, WriterFailureEndsOnEveryRank) {
   pf::ChunkedGather gather(comm, s.gids.data(), static_cast<int>(s.gids.size()), kPoints, kChunk);
   int calls = 0;
   auto run = [&] {
-    gather.gather({{s.scalar.data(), 1}}, [&](int begin, int, const std::vector<const double*>&) {
+    gather.gather({s.fields()[1]}, [&](int begin, int, const std::vector<const double*>&) {
       ++calls;
       if (begin == 2 * kChunk) throw std::runtime_error("disk full");
     });
