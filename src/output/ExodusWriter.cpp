@@ -15,6 +15,9 @@ namespace {
 // the ExodusII library and then fail to match gold variable names, so refuse them up front.
 constexpr std::size_t kMaxName = 32;
 
+// Coordinates and the node map go to the file in pieces of this many nodes (a bounded copy, not a whole one).
+constexpr std::size_t kPiece = 32768;
+
 void checkName(const std::string& filename, const std::string& name) {
   if (name.empty() || name.size() > kMaxName)
     throw std::runtime_error("ExodusWriter(" + filename + "): variable name '" + name +
@@ -80,16 +83,18 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
   checkNames(filename, elementNames_, "element");
   checkNames(filename, globalNames_, "global");
 
-  for (int b : blockIdPerNode) {
+  for (int b : blockIdPerNode) {  // the distinct ids, sorted (a few: no copy of the whole list)
     if (b < 1) throw std::runtime_error("ExodusWriter(" + filename + "): block ids must be >= 1");
+    const auto at = std::lower_bound(blockIds_.begin(), blockIds_.end(), b);
+    if (at == blockIds_.end() || *at != b) blockIds_.insert(at, b);
   }
-  blockIds_ = blockIdPerNode;
-  std::sort(blockIds_.begin(), blockIds_.end());
-  blockIds_.erase(std::unique(blockIds_.begin(), blockIds_.end()), blockIds_.end());
-  blockNodes_.resize(blockIds_.size());
+  blockSizes_.assign(blockIds_.size(), 0);
   for (std::size_t n = 0; n < numNodes_; ++n) {
-    auto it = std::lower_bound(blockIds_.begin(), blockIds_.end(), blockIdPerNode[n]);
-    blockNodes_[it - blockIds_.begin()].push_back(n);
+    const auto b = static_cast<std::size_t>(
+        std::lower_bound(blockIds_.begin(), blockIds_.end(), blockIdPerNode[n]) - blockIds_.begin());
+    if (runs_.empty() || runs_.back().b != b || runs_.back().end != n) runs_.push_back({n, n, blockSizes_[b], b});
+    runs_.back().end = n + 1;
+    ++blockSizes_[b];
   }
 
   if (append)
@@ -153,39 +158,60 @@ void ExodusWriter::openToAppend(const std::vector<std::string>& nodalNames) {
   }
 }
 
+// In pieces of kPiece nodes, so that no whole-cloud copy is made beside the caller's arrays.
 void ExodusWriter::putCoordinates(const std::vector<double>& coords) const {
-  std::vector<double> x(numNodes_), y(numNodes_), z(numNodes_);
-  for (std::size_t n = 0; n < numNodes_; ++n) {
-    x[n] = coords[3 * n];
-    y[n] = coords[3 * n + 1];
-    z[n] = coords[3 * n + 2];
+  std::vector<double> x, y, z;
+  for (std::size_t begin = 0; begin < numNodes_; begin += kPiece) {
+    const std::size_t count = std::min(kPiece, numNodes_ - begin);
+    x.resize(count), y.resize(count), z.resize(count);
+    for (std::size_t n = 0; n < count; ++n) {
+      x[n] = coords[3 * (begin + n)];
+      y[n] = coords[3 * (begin + n) + 1];
+      z[n] = coords[3 * (begin + n) + 2];
+    }
+    check(ex_put_partial_coord(exoid_, static_cast<int64_t>(begin) + 1, static_cast<int64_t>(count), x.data(), y.data(),
+                               z.data()),
+          "ex_put_partial_coord");
   }
-  check(ex_put_coord(exoid_, x.data(), y.data(), z.data()), "ex_put_coord");
   std::vector<std::string> coordNames{"X", "Y", "Z"};
   auto coordPtrs = cstrings(coordNames);
   check(ex_put_coord_names(exoid_, coordPtrs.data()), "ex_put_coord_names");
 }
 
 // Nodes keep their global order (local index = global id - 1); elements are renumbered block by block
-// by Exodus, so the element number map carries the global id back.
+// by Exodus, so the element number map carries the global id back. One block's connectivity at a time.
 void ExodusWriter::putBlocks() const {
-  std::vector<int> nodeMap(numNodes_), elemMap;
-  for (std::size_t n = 0; n < numNodes_; ++n) nodeMap[n] = static_cast<int>(n) + 1;
+  std::vector<int> ids;
+  auto blockNodes = [&](std::size_t b) {  // the nodes of block b in node order, 1-based
+    ids.clear();
+    for (const Run& r : runs_)
+      if (r.b == b)
+        for (std::size_t n = r.begin; n < r.end; ++n) ids.push_back(static_cast<int>(n) + 1);
+  };
   for (std::size_t b = 0; b < blockIds_.size(); ++b) {
-    const auto& nodes = blockNodes_[b];
-    check(ex_put_block(exoid_, EX_ELEM_BLOCK, blockIds_[b], "SPHERE", static_cast<int64_t>(nodes.size()), 1, 0, 0, 0),
+    check(ex_put_block(exoid_, EX_ELEM_BLOCK, blockIds_[b], "SPHERE", static_cast<int64_t>(blockSizes_[b]), 1, 0, 0, 0),
           "ex_put_block");
-    std::vector<int> conn(nodes.size());
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      conn[i] = static_cast<int>(nodes[i]) + 1;
-      elemMap.push_back(conn[i]);
-    }
-    check(ex_put_conn(exoid_, EX_ELEM_BLOCK, blockIds_[b], conn.data(), nullptr, nullptr), "ex_put_conn");
+    blockNodes(b);
+    check(ex_put_conn(exoid_, EX_ELEM_BLOCK, blockIds_[b], ids.data(), nullptr, nullptr), "ex_put_conn");
     const std::string name = "block_" + std::to_string(blockIds_[b]);
     check(ex_put_name(exoid_, EX_ELEM_BLOCK, blockIds_[b], name.c_str()), "ex_put_name");
   }
-  check(ex_put_id_map(exoid_, EX_NODE_MAP, nodeMap.data()), "ex_put_id_map(nodes)");
-  check(ex_put_id_map(exoid_, EX_ELEM_MAP, elemMap.data()), "ex_put_id_map(elements)");
+  // The node map, then the element map (the order the file's variables are defined in).
+  for (std::size_t begin = 0; begin < numNodes_; begin += kPiece) {
+    const std::size_t count = std::min(kPiece, numNodes_ - begin);
+    ids.resize(count);
+    for (std::size_t n = 0; n < count; ++n) ids[n] = static_cast<int>(begin + n) + 1;
+    check(ex_put_partial_id_map(exoid_, EX_NODE_MAP, static_cast<int64_t>(begin) + 1, static_cast<int64_t>(count),
+                                ids.data()),
+          "ex_put_partial_id_map(nodes)");
+  }
+  int64_t firstElement = 1;
+  for (std::size_t b = 0; b < blockIds_.size(); ++b) {
+    blockNodes(b);
+    const auto size = static_cast<int64_t>(blockSizes_[b]);
+    check(ex_put_partial_id_map(exoid_, EX_ELEM_MAP, firstElement, size, ids.data()), "ex_put_partial_id_map(elements)");
+    firstElement += size;
+  }
 }
 
 ExodusWriter::~ExodusWriter() {
@@ -197,7 +223,7 @@ void ExodusWriter::writeStep(double time, const std::map<std::string, std::vecto
                              const std::map<std::string, std::vector<double>>& elementScalars,
                              const std::map<std::string, double>& globals) {
   auto lookup = [&](const std::map<std::string, std::vector<double>>& m, const std::string& name,
-                    std::size_t expected, const char* kind) -> const std::vector<double>& {
+                    std::size_t expected, const char* kind) -> const double* {
     auto it = m.find(name);
     if (it == m.end())
       throw std::runtime_error("ExodusWriter(" + filename_ + "): writeStep is missing " + kind + " '" + name +
@@ -206,55 +232,76 @@ void ExodusWriter::writeStep(double time, const std::map<std::string, std::vecto
       throw std::runtime_error("ExodusWriter(" + filename_ + "): " + kind + " '" + name + "' has " +
                                std::to_string(it->second.size()) + " values, expected " +
                                std::to_string(expected));
-    return it->second;
+    return it->second.data();
   };
   // Validate everything before touching the file so a bad call does not leave a half step.
-  for (const auto& v : vectorNames_) lookup(nodalVectors, v, 3 * numNodes_, "nodal vector");
-  for (const auto& s : scalarNames_) lookup(nodalScalars, s, numNodes_, "nodal scalar");
-  for (const auto& e : elementNames_) lookup(elementScalars, e, numNodes_, "element scalar");
+  std::vector<const double*> vectors, scalars, elements;
+  for (const auto& v : vectorNames_) vectors.push_back(lookup(nodalVectors, v, 3 * numNodes_, "nodal vector"));
+  for (const auto& s : scalarNames_) scalars.push_back(lookup(nodalScalars, s, numNodes_, "nodal scalar"));
+  for (const auto& e : elementNames_) elements.push_back(lookup(elementScalars, e, numNodes_, "element scalar"));
+  for (const auto& g : globalNames_)
+    if (globals.find(g) == globals.end())
+      throw std::runtime_error("ExodusWriter(" + filename_ + "): writeStep is missing global '" + g + "'");
+  beginStep(time);
+  writeNodes(0, numNodes_, vectors, scalars, elements);
+  endStep(globals);
+}
+
+void ExodusWriter::beginStep(double time) {
+  if (inStep_) throw std::logic_error("ExodusWriter(" + filename_ + "): beginStep inside a step");
+  const int step = step_ + 1;
+  check(ex_put_time(exoid_, step, &time), "ex_put_time");
+  inStep_ = true;
+  nextNode_ = 0;
+}
+
+void ExodusWriter::writeNodes(std::size_t begin, std::size_t count, const std::vector<const double*>& vectors,
+                              const std::vector<const double*>& scalars, const std::vector<const double*>& elements) {
+  if (!inStep_ || begin != nextNode_ || begin + count > numNodes_ || vectors.size() != vectorNames_.size() ||
+      scalars.size() != scalarNames_.size() || elements.size() != elementNames_.size())
+    throw std::logic_error("ExodusWriter(" + filename_ + "): writeNodes out of order or with other fields");
+  const int step = step_ + 1;
+  const auto first = static_cast<int64_t>(begin) + 1, nn = static_cast<int64_t>(count);
+  int var = 1;
+  std::vector<double> buf(count);
+  for (const double* data : vectors)
+    for (int c = 0; c < 3; ++c, ++var) {
+      for (std::size_t n = 0; n < count; ++n) buf[n] = (planar_ && c == 2) ? 0.0 : data[3 * n + c];
+      check(ex_put_partial_var(exoid_, step, EX_NODAL, var, 1, first, nn, buf.data()), "ex_put_partial_var(nodal)");
+    }
+  for (const double* data : scalars)
+    check(ex_put_partial_var(exoid_, step, EX_NODAL, var++, 1, first, nn, data), "ex_put_partial_var(nodal)");
+  // Element values: each run's share of [begin, begin + count) is a contiguous piece of its block.
+  for (const Run& r : runs_) {
+    const std::size_t lo = std::max(r.begin, begin), hi = std::min(r.end, begin + count);
+    if (lo >= hi) continue;
+    for (std::size_t e = 0; e < elements.size(); ++e)
+      check(ex_put_partial_var(exoid_, step, EX_ELEM_BLOCK, static_cast<int>(e) + 1, blockIds_[r.b],
+                               static_cast<int64_t>(r.first + (lo - r.begin)) + 1, static_cast<int64_t>(hi - lo),
+                               elements[e] + (lo - begin)),
+            "ex_put_partial_var(element)");
+  }
+  nextNode_ = begin + count;
+}
+
+void ExodusWriter::endStep(const std::map<std::string, double>& globals) {
+  if (!inStep_ || nextNode_ != numNodes_)
+    throw std::logic_error("ExodusWriter(" + filename_ + "): endStep before every node was written");
   std::vector<double> globalValues;
   for (const auto& g : globalNames_) {
     auto it = globals.find(g);
     if (it == globals.end())
-      throw std::runtime_error("ExodusWriter(" + filename_ + "): writeStep is missing global '" + g + "'");
+      throw std::runtime_error("ExodusWriter(" + filename_ + "): endStep is missing global '" + g + "'");
     globalValues.push_back(it->second);
   }
-
   const int step = step_ + 1;
-  check(ex_put_time(exoid_, step, &time), "ex_put_time");
-
-  const auto nn = static_cast<int64_t>(numNodes_);
-  int var = 1;
-  std::vector<double> buf(numNodes_);
-  for (const auto& v : vectorNames_) {
-    const auto& data = lookup(nodalVectors, v, 3 * numNodes_, "nodal vector");
-    for (int c = 0; c < 3; ++c, ++var) {
-      for (std::size_t n = 0; n < numNodes_; ++n) buf[n] = (planar_ && c == 2) ? 0.0 : data[3 * n + c];
-      check(ex_put_var(exoid_, step, EX_NODAL, var, 1, nn, buf.data()), "ex_put_var(nodal)");
-    }
-  }
-  for (const auto& s : scalarNames_) {
-    const auto& data = lookup(nodalScalars, s, numNodes_, "nodal scalar");
-    check(ex_put_var(exoid_, step, EX_NODAL, var++, 1, nn, data.data()), "ex_put_var(nodal)");
-  }
-  for (std::size_t e = 0; e < elementNames_.size(); ++e) {
-    const auto& data = lookup(elementScalars, elementNames_[e], numNodes_, "element scalar");
-    for (std::size_t b = 0; b < blockIds_.size(); ++b) {
-      const auto& nodes = blockNodes_[b];
-      buf.resize(nodes.size());
-      for (std::size_t i = 0; i < nodes.size(); ++i) buf[i] = data[nodes[i]];
-      check(ex_put_var(exoid_, step, EX_ELEM_BLOCK, static_cast<int>(e) + 1, blockIds_[b],
-                       static_cast<int64_t>(nodes.size()), buf.data()),
-            "ex_put_var(element)");
-    }
-    buf.resize(numNodes_);
-  }
   if (!globalValues.empty())
     check(ex_put_var(exoid_, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(globalValues.size()), globalValues.data()),
           "ex_put_var(global)");
   // Sync every step: a run killed later still leaves a readable file with the steps so far.
   check(ex_update(exoid_), "ex_update");
   step_ = step;
+  inStep_ = false;
 }
 
 }  // namespace pf

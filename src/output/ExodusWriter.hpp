@@ -41,6 +41,15 @@ class ExodusWriter {
                  const std::map<std::string, std::vector<double>>& elementScalars,
                  const std::map<std::string, double>& globals = {});
 
+  // The same step written a piece at a time (rank 0 then never needs a whole field): beginStep, then
+  // writeNodes for consecutive node ranges [begin, begin + count) from 0 covering every node, then endStep.
+  // vectors[i]: 3 * count values of nodalVectorNames[i]; scalars[j]: count values of nodalScalarNames[j];
+  // elements[e]: count values of elementScalarNames[e] given per node. endStep throws if a node was missed.
+  void beginStep(double time);
+  void writeNodes(std::size_t begin, std::size_t count, const std::vector<const double*>& vectors,
+                  const std::vector<const double*>& scalars, const std::vector<const double*>& elements);
+  void endStep(const std::map<std::string, double>& globals = {});
+
   int numStepsWritten() const { return step_; }
   const std::string& filename() const { return filename_; }
 
@@ -59,8 +68,17 @@ class ExodusWriter {
   std::size_t numNodes_ = 0;
   bool planar_ = false;
   std::vector<std::string> vectorNames_, scalarNames_, elementNames_, globalNames_;  // globals: EX_GLOBAL
-  std::vector<int> blockIds_;                          // sorted distinct ids
-  std::vector<std::vector<std::size_t>> blockNodes_;  // per block: node indices (0-based)
+  // Nodes of one block in a row, in node order: block index b (in blockIds_), nodes [begin, end), the first
+  // being element `first` (0-based) of its block. A few runs per block, not one entry per node.
+  struct Run {
+    std::size_t begin, end, first;
+    std::size_t b;
+  };
+  std::vector<int> blockIds_;                // sorted distinct ids
+  std::vector<std::size_t> blockSizes_;      // per block: its node count
+  std::vector<Run> runs_;
+  std::size_t nextNode_ = 0;                 // the step being written: nodes written so far
+  bool inStep_ = false;
 };
 
 }  // namespace pf

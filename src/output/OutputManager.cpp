@@ -14,6 +14,7 @@
 #include "HistoryWriter.hpp"
 #include "OutputFiles.hpp"
 #include "core/InputError.hpp"
+#include "parallel/ChunkedGather.hpp"
 #include "parallel/Collective.hpp"
 
 namespace pf {
@@ -56,15 +57,19 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   addReactions(out);
   applied_ = out.appliedDisplacement;
   bodyForce_.assign(model_.numDofs(), 0.0);
+  if (exodus_ && !(nodalVectors_.empty() && elementScalars_.empty()))
+    gather_ = std::make_unique<ChunkedGather>(model_.layout().comm(), model_.layout().gids().data(), model_.numOwned(),
+                                              model_.layout().numGlobal());
   onRoot([&] { openFiles(); });
 }
 
 // Collective: rank 0 runs write; its failure (a full disk, a missing directory) becomes every rank's error,
 // naming the deck and the output list.
-void OutputManager::onRoot(const std::function<void()>& write) {
+// everyRank: every rank runs write (a collective write, rank 0 writing the file).
+void OutputManager::onRoot(const std::function<void()>& write, bool everyRank) {
   const bool root = model_.layout().rank() == 0;
   collectively(model_.layout().comm(), [&] {
-    if (!root) return;
+    if (!root && !everyRank) return;
     try {
       write();
     } catch (const InputError&) {
@@ -248,14 +253,6 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   return model_.state().committed(var)[i];
 }
 
-std::vector<double> OutputManager::ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
-                                              const std::vector<double>& v, const std::vector<double>& f) const {
-  std::vector<double> out(static_cast<std::size_t>(ncomp) * model_.numOwned());
-  for (int i = 0; i < model_.numOwned(); ++i)
-    for (int c = 0; c < ncomp; ++c) out[ncomp * i + c] = nodeValue(var, c, i, u, v, f);
-  return out;
-}
-
 void OutputManager::onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
                            const std::vector<double>& f) {
   ++count_;
@@ -295,7 +292,7 @@ std::vector<double> OutputManager::historyRow(const StepReport& report, const st
   return global;
 }
 
-// Collective: the fields are gathered to rank 0, which writes them.
+// Collective: rank 0 writes the fields as they arrive, a chunk at a time.
 void OutputManager::writeExodusStep(double time, const std::vector<double>& u, const std::vector<double>& v,
                                     const std::vector<double>& f) {
   std::map<std::string, double> globals;
@@ -311,16 +308,28 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
     }
     globals[var] = model_.sum(e);
   }
-  std::map<std::string, std::vector<double>> vectors, scalars, none;
-  for (const std::string& var : nodalVectors_) {
-    std::vector<double> owned = ownedField(var, 3, u, v, f);
-    vectors[var] = model_.layout().gatherToRoot(owned.data(), 3);
+  // Rank 0 writes the fields chunk by chunk in cloud order as the ranks send their points' values, taken
+  // straight from the model (parallel/ChunkedGather.hpp): no rank copies a whole field, not even its share.
+  std::vector<ChunkedGather::Field> fields;
+  for (const std::string& var : nodalVectors_)
+    fields.push_back({[&, var](int i, double* out) { for (int c = 0; c < 3; ++c) out[c] = nodeValue(var, c, i, u, v, f); }, 3});
+  for (const std::string& var : elementScalars_)
+    fields.push_back({[&, var](int i, double* out) { *out = nodeValue(var, 0, i, u, v, f); }, 1});
+  if (fields.empty()) {  // globals only: Peridigm's one-dummy-node file
+    onRoot([&] { writer_->writeStep(time, {}, {}, {}, globals); });
+    return;
   }
-  for (const std::string& var : elementScalars_) {
-    std::vector<double> owned = ownedField(var, 1, u, v, f);
-    scalars[exodusName(var)] = model_.layout().gatherToRoot(owned.data(), 1);
-  }
-  onRoot([&] { writer_->writeStep(time, vectors, none, scalars, globals); });
+  const std::size_t nv = nodalVectors_.size();
+  const int numGlobal = gather_->numGlobal();
+  onRoot(
+      [&] {
+        gather_->gather(fields, [&](int begin, int count, const std::vector<const double*>& values) {
+          if (begin == 0) writer_->beginStep(time);
+          writer_->writeNodes(begin, count, {values.begin(), values.begin() + nv}, {}, {values.begin() + nv, values.end()});
+          if (begin + count == numGlobal) writer_->endStep(globals);
+        });
+      },
+      true);
 }
 
 void OutputManager::saveTo(CheckpointData& data) const {

@@ -1,6 +1,7 @@
 #pragma once
-// Observes converged steps and writes what the Output list asks for: one merged Exodus II file (rank 0
-// gathers) every Output Frequency steps, and a CSV history with reactions and probes every output step.
+// Observes converged steps and writes what the Output list asks for: one merged Exodus II file every Output
+// Frequency steps (rank 0 writes it a chunk of points at a time as the ranks send them, never holding a whole
+// field: parallel/ChunkedGather.hpp), and a CSV history with reactions and probes every output step.
 // Reaction_<Set>_<C> is the force the supports apply to the body on that node set: -sum (f + b) V;
 // "Reaction Names" replaces <Set> by a short name per entry of "Reactions". Then Reaction_<Wall>_<C> per
 // Rigid Wall: its force on the body in the reported step (sum m dv / dt, model/RigidWall.hpp). "Applied Displacement" names
@@ -26,6 +27,7 @@
 
 namespace pf {
 
+class ChunkedGather;
 class ExodusWriter;
 struct CheckpointData;
 class HistoryWriter;
@@ -69,7 +71,7 @@ class OutputManager : public StepObserver {
   int nearestPoint(const double* at, double* d2) const;
   double spacingAt(int q) const;
   void addReactions(const OutputSpec& out);
-  void onRoot(const std::function<void()>& write);
+  void onRoot(const std::function<void()>& write, bool everyRank = false);
   void openFiles();
   void openWriters(bool append);
   std::vector<double> historyRow(const StepReport& report, const std::vector<double>& u,
@@ -78,8 +80,6 @@ class OutputManager : public StepObserver {
                        const std::vector<double>& f);
   double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
                    const std::vector<double>& f) const;
-  std::vector<double> ownedField(const std::string& var, int ncomp, const std::vector<double>& u,
-                                 const std::vector<double>& v, const std::vector<double>& f) const;
 
   Problem& pb_;
   Model& model_;
@@ -95,6 +95,7 @@ class OutputManager : public StepObserver {
   std::vector<Probe> probes_;
   std::vector<Reaction> reactions_;
   std::unique_ptr<ExodusWriter> writer_;
+  std::unique_ptr<ChunkedGather> gather_;  // built once: which owned points go to rank 0 in which chunk
   std::unique_ptr<HistoryWriter> history_;
   std::unique_ptr<OutputFiles> files_;  // rank 0
   std::vector<double> bodyForce_;

@@ -22,9 +22,13 @@
 namespace pf {
 
 // Maps and transfers for 1- and 3-component data, index = ncomp == 3.
+// The rank-0 maps (every point on rank 0) are built by the first gatherToRoot only: the Exodus output no
+// longer needs them (parallel/ChunkedGather.hpp), so a run without checkpoints never holds them.
 struct DistributedLayout::Transfers {
-  std::unique_ptr<Epetra_BlockMap> owned[2], overlap[2], root[2];
-  std::unique_ptr<Epetra_Import> import[2], rootImport[2];
+  std::unique_ptr<Epetra_BlockMap> owned[2], overlap[2];
+  std::unique_ptr<Epetra_Import> import[2];
+  mutable std::unique_ptr<Epetra_BlockMap> root[2];
+  mutable std::unique_ptr<Epetra_Import> rootImport[2];
   std::unique_ptr<Epetra_Export> exporter[2];
   // Imports of other widths (a two-phase model's per-node rows), built on first use.
   struct Wide {
@@ -175,13 +179,6 @@ void DistributedLayout::buildTransfers() {
     t->overlap[k].reset(new Epetra_BlockMap(-1, numOverlap(), gids_.data(), ncomp, 0, ecomm));
     t->import[k].reset(new Epetra_Import(*t->overlap[k], *t->owned[k]));
     t->exporter[k].reset(new Epetra_Export(*t->overlap[k], *t->owned[k]));
-    std::vector<int> all;
-    if (comm_.rank() == 0) {
-      all.resize(numGlobal_);
-      std::iota(all.begin(), all.end(), 0);
-    }
-    t->root[k].reset(new Epetra_BlockMap(-1, static_cast<int>(all.size()), all.data(), ncomp, 0, ecomm));
-    t->rootImport[k].reset(new Epetra_Import(*t->root[k], *t->owned[k]));
   }
   transfers_ = std::move(t);
 }
@@ -218,6 +215,13 @@ void DistributedLayout::exportAdd(const double* overlap, double* owned, int ncom
 
 std::vector<double> DistributedLayout::gatherToRoot(const double* owned, int ncomp) const {
   const int k = ncomp == 3 ? 1 : 0;
+  if (!transfers_->rootImport[k]) {  // collective, as every gatherToRoot
+    std::vector<int> all(comm_.rank() == 0 ? numGlobal_ : 0);
+    std::iota(all.begin(), all.end(), 0);
+    transfers_->root[k].reset(new Epetra_BlockMap(-1, static_cast<int>(all.size()), all.data(), ncomp, 0,
+                                                  comm_.impl().epetra));
+    transfers_->rootImport[k].reset(new Epetra_Import(*transfers_->root[k], *transfers_->owned[k]));
+  }
   std::vector<double> out(comm_.rank() == 0 ? static_cast<std::size_t>(ncomp) * numGlobal_ : 0);
   Epetra_Vector src(View, *transfers_->owned[k], const_cast<double*>(owned));
   Epetra_Vector dst(View, *transfers_->root[k], out.data());

@@ -46,7 +46,8 @@ class DistributedLayout {
   void importToOverlap(const double* owned, double* overlap, int ncomp) const;
   // owned = sum over ranks of overlap contributions to each owned point (owned entries included).
   void exportAdd(const double* overlap, double* owned, int ncomp) const;
-  // Rank 0 gets ncomp values per point in cloud order; other ranks get an empty vector.
+  // Collective: rank 0 gets ncomp values per point in cloud order; other ranks get an empty vector. The first
+  // call builds the rank-0 maps (every point on rank 0; checkpoints only, Exodus output uses ChunkedGather).
   std::vector<double> gatherToRoot(const double* owned, int ncomp) const;
 
   double sum(double v) const { return comm_.sum(v); }
