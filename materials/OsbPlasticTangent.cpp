@@ -60,6 +60,7 @@ ReturnDerivative returnDerivative(const OsbTrialMoments& t, double dS2, double d
 }
 
 // Node i: gathered family in scr (len, bond vectors, V_j), t^d_tr in scr.a; uses g0..g2 as work arrays.
+// Elastic nodes (most of a body) take only the first and the last bond pass.
 template <bool Unit>
 bool j2NodeDerivative(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const double* dy,
                       const J2Fields& s, int i, const osb::FamilyScratch& scr, double* dforce) {
@@ -68,39 +69,47 @@ bool j2NodeDerivative(const FamilyView& fam, const J2Parameters& p, const J2Flow
   const int* nbr = fam.neighbors + b0;
   const double *xr = fam.refLength + b0, *w = fam.influence + b0, *epN = s.edpN + b0;
   const double *len = scr.len, *vj = scr.vj, *td = scr.a;
-  double *de = scr.g0, *dtd = scr.g1, *dep = scr.g2;
+  double *de = scr.g0, *il = scr.g1, *dep = scr.g2;
   const double m = fam.weightedVolume[i], invm = 1.0 / m, kD = c.k * c.D;
   const J2NodeTrial tr = j2NodeTrial<Unit>(fam, p, flow, s.scf, epN, i, scr, scr.a);
   const OsbJ2NodeState committed{s.lambdaN[i], s.alphaN[i], s.qN[i], s.signN[i]};
   const OsbJ2Return r = osbJ2ReturnMapping(tr.moments, committed, tr.k);
   if (r.status != OsbJ2Status::Ok) return false;
+  const bool plastic = r.dlambda > 0.0;
   const double bm = tr.k.bm, cc = c.c;
-  // Trial part: de = M . (dy_j - dy_i), d theta_tr (Eqs. 4/16 with e^dp_n fixed), d t^d_tr (Eqs. 40-41).
-  double dsum = 0.0;
+  // Trial part: de = M . (dy_j - dy_i), d theta_tr (Eqs. 4/16 with e^dp_n fixed); with dt^d_tr = omega bm (de -
+  // c d theta_tr x) (Eqs. 40-41) the moments dP1 = 2 sum t^d dt^d V and d(t^d . x) follow from four sums of this pass.
+  double dsum = 0.0, tdDe = 0.0, tdX = 0.0, wXX = 0.0;
   for (int k = 0; k < n; ++k) {
     const double* a = dy + 3 * nbr[k];
     const double* b = dy + 3 * i;
-    de[k] = (scr.d0[k] * (a[0] - b[0]) + scr.d1[k] * (a[1] - b[1]) + scr.d2[k] * (a[2] - b[2])) / len[k];
-    dsum += w[k] * xr[k] * de[k] * vj[k];
+    il[k] = 1.0 / len[k];
+    de[k] = (scr.d0[k] * (a[0] - b[0]) + scr.d1[k] * (a[1] - b[1]) + scr.d2[k] * (a[2] - b[2])) * il[k];
+    const double wv = w[k] * vj[k];
+    dsum += wv * xr[k] * de[k];
+    if (plastic) {
+      tdDe += td[k] * wv * de[k];
+      tdX += td[k] * wv * xr[k];
+      wXX += wv * xr[k] * xr[k];
+    }
   }
   const double dthetaTr = kD * dsum * invm;
-  double dS2 = 0.0, dSx = 0.0;
-  for (int k = 0; k < n; ++k) {
-    dtd[k] = w[k] * bm * (de[k] - cc * dthetaTr * xr[k]);
-    dS2 += 2.0 * td[k] * dtd[k] * vj[k];
-    dSx += xr[k] * dtd[k] * vj[k];
-  }
-  // Return mapping (Eqs. 47, 50) and plastic extension e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58).
-  const ReturnDerivative d = returnDerivative(tr.moments, dS2, dSx, r, tr.k);
-  const double a1 = d.dlam * d.G1, a2 = d.dlam * flow.phi * d.G2 * d.pp;
-  const double da1 = d.ddlam * d.G1 + d.dlam * d.dG1;
-  const double da2 = flow.phi * (d.ddlam * d.G2 * d.pp + d.dlam * d.dG2 * d.pp + d.dlam * d.G2 * d.dpp);
   double theta = tr.thetaTr, dtheta = dthetaTr;
-  if (d.dlam > 0.0) {
+  ReturnDerivative d{0.0, 1.0, 1.0, r.pp, 0.0, 0.0, 0.0, 0.0};
+  double a1 = 0.0, a2 = 0.0;
+  if (plastic) {
+    const double dS2 = 2.0 * bm * (tdDe - cc * dthetaTr * tdX), dSx = bm * (dsum - cc * dthetaTr * wXX);
+    // Return mapping (Eqs. 47, 50); plastic extension e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58).
+    d = returnDerivative(tr.moments, dS2, dSx, r, tr.k);
+    a1 = d.dlam * d.G1;
+    a2 = d.dlam * flow.phi * d.G2 * d.pp;
+    const double da1 = d.ddlam * d.G1 + d.dlam * d.dG1;
+    const double da2 = flow.phi * (d.ddlam * d.G2 * d.pp + d.dlam * d.dG2 * d.pp + d.dlam * d.G2 * d.dpp);
     double sum = 0.0, dsumP = 0.0;
     for (int k = 0; k < n; ++k) {
+      const double dtd = w[k] * bm * (de[k] - cc * dthetaTr * xr[k]);
       const double ep = epN[k] + a1 * (td[k] - d.pp * xr[k]) + a2 * xr[k];
-      dep[k] = da1 * (td[k] - d.pp * xr[k]) + a1 * (dtd[k] - d.dpp * xr[k]) + da2 * xr[k];
+      dep[k] = da1 * (td[k] - d.pp * xr[k]) + a1 * (dtd - d.dpp * xr[k]) + da2 * xr[k];
       sum += w[k] * xr[k] * ((len[k] - xr[k]) - ep) * vj[k];
       dsumP += w[k] * xr[k] * (de[k] - dep[k]) * vj[k];
     }
@@ -109,24 +118,23 @@ bool j2NodeDerivative(const FamilyView& fam, const J2Parameters& p, const J2Flow
       theta = kD * sum * invm;
       dtheta = kD * dsumP * invm;
     }
-  } else {
-    for (int k = 0; k < n; ++k) dep[k] = 0.0;
   }
-  // Force t = omega (iso theta x + dev (e - e^dp)) along M (Eqs. 7-13): d(t M) = dt M + t (I - M M^T) dY / |Y|.
+  // Force t = omega (iso theta x + dev (e - e^dp)) along M = Y/|Y| (Eqs. 7-13): d(t M) = dt M + t (I - M M^T) dY/|Y|
+  // = (dt - t de/|Y|) Y/|Y| + (t/|Y|) dY.
   const double iso = (c.A - tr.B * cc) * invm, dev = tr.B * invm;
   const double* V = fam.volume;
   for (int k = 0; k < n; ++k) {
     if (fam.brokenN && fam.broken[b0 + k] != 0.0) continue;  // no force, no derivative (gatherFamily)
     const int j = nbr[k];
-    const double ep = d.dlam > 0.0 ? epN[k] + a1 * (td[k] - d.pp * xr[k]) + a2 * xr[k] : epN[k];
+    const double ep = plastic ? epN[k] + a1 * (td[k] - d.pp * xr[k]) + a2 * xr[k] : epN[k];
+    const double dp = plastic ? dep[k] : 0.0;
     const double t = w[k] * (iso * theta * xr[k] + dev * ((len[k] - xr[k]) - ep));
-    const double dt = w[k] * (iso * dtheta * xr[k] + dev * (de[k] - dep[k]));
-    const double l = len[k];
-    const double M[3] = {scr.d0[k] / l, scr.d1[k] / l, scr.d2[k] / l};
+    const double dt = w[k] * (iso * dtheta * xr[k] + dev * (de[k] - dp));
+    const double along = (dt - t * de[k] * il[k]) * il[k], across = t * il[k];
     const double Vi = fam.fraction ? V[i] * fam.fraction[b0 + k] : V[i];  // as addBondForces
+    const double Y[3] = {scr.d0[k], scr.d1[k], scr.d2[k]};
     for (int e = 0; e < 3; ++e) {
-      const double dd = dy[3 * j + e] - dy[3 * i + e];
-      const double dT = dt * M[e] + t * (dd - M[e] * de[k]) / l;
+      const double dT = along * Y[e] + across * (dy[3 * j + e] - dy[3 * i + e]);
       dforce[3 * i + e] += dT * vj[k];
       dforce[3 * j + e] -= dT * Vi;
     }
