@@ -1,9 +1,11 @@
 #include "ElasticPlasticMaterial.hpp"
 
 #include <algorithm>
+#include <vector>
 
 #include "core/InputError.hpp"
 #include "OsbKernels.hpp"
+#include "OsbPlasticTangent.hpp"
 #include "ShearCorrectionFactor.hpp"
 #include "SolidParameters.hpp"
 
@@ -99,18 +101,26 @@ std::vector<StateSpec> ElasticPlasticMaterial::states() {
           {"Surface_Correction_Factor", Location::Node, false, true}};
 }
 
+namespace {
+// The committed (n) history the return mapping starts from; the trial pointers are left null.
+J2Fields committedFields(const StateStore& state) {
+  J2Fields f{};
+  f.edpN = state.committed("Deviatoric_Plastic_Extension");
+  f.lambdaN = state.committed("Lambda");
+  f.alphaN = state.committed("Equivalent_Plastic_Strain");
+  f.qN = state.committed("Back_Stress");
+  f.signN = state.committed("Von_Mises_Sign");
+  return f;
+}
+}  // namespace
+
 void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                           double* force) const {
-  J2Fields f;
-  f.edpN = state.committed("Deviatoric_Plastic_Extension");
+  J2Fields f = committedFields(state);
   f.edp = state.trial("Deviatoric_Plastic_Extension");
-  f.lambdaN = state.committed("Lambda");
   f.lambda = state.trial("Lambda");
-  f.alphaN = state.committed("Equivalent_Plastic_Strain");
   f.alpha = state.trial("Equivalent_Plastic_Strain");
-  f.qN = state.committed("Back_Stress");
   f.q = state.trial("Back_Stress");
-  f.signN = state.committed("Von_Mises_Sign");
   f.sign = state.trial("Von_Mises_Sign");
   f.vonMises = state.trial("Von_Mises_Stress");
   f.signedVonMises = state.trial("Signed_Von_Mises_Stress");
@@ -126,6 +136,25 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
   // StateStore::commit swaps zeros), the dilatation and force are the Elastic model's.
   if (disablePlasticity_) osbElasticDilatationAndForce(fam, params_.osb, y, f.theta, force);
   else osbJ2Force(fam, params_, y, f, force);
+}
+
+bool ElasticPlasticMaterial::forceDerivative(const FamilyView& fam, const double* y, const double* dy,
+                                             const StateStore& state, double* dforce) const {
+  if (disablePlasticity_) {
+    osbElasticForceDerivative(fam, params_.osb, y, dy, dforce);
+    return true;
+  }
+  J2Fields f = committedFields(state);
+  // The factor is set by the first force evaluation (computeForce); a derivative before any is computed here.
+  std::vector<double> own;
+  const double* scf = state.committed("Surface_Correction_Factor");  // not history: the trial array
+  if (shearCorrection_ && fam.begin < fam.end && !(scf[fam.begin] > 0.0)) {
+    own.assign(static_cast<std::size_t>(fam.end), 1.0);
+    osbShearCorrectionFactor(fam, own.data());
+    scf = own.data();
+  }
+  f.scf = shearCorrection_ ? scf : nullptr;
+  return osbJ2ForceDerivative(fam, params_, y, dy, f, dforce);
 }
 
 void ElasticPlasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {

@@ -24,6 +24,11 @@ class ElasticPlasticMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
+  // The consistent tangent of the return mapping (OsbPlasticTangent.hpp), or the elastic one with plasticity
+  // disabled. Reads the committed history, as the force does.
+  bool hasForceDerivative() const override { return true; }
+  bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
+                       double* dforce) const override;
   bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
   double density() const override { return density_; }
   Dimension dimension() const override { return params_.dim; }

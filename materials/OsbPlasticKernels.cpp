@@ -7,6 +7,7 @@
 #include "core/Material.hpp"
 #include "J2ReturnMapping.hpp"
 #include "OsbBondLoops.hpp"
+#include "OsbJ2Trial.hpp"
 #include "PeridigmHardening.hpp"
 
 namespace pf {
@@ -143,23 +144,6 @@ OsbJ2Return osbJ2ReturnMapping(const OsbTrialMoments& trial, const OsbJ2NodeStat
 
 // ---- The bond loop: gather, trial moments, return mapping, plastic extension, force ----
 
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-// How the flow treats the x-component of t^d in this dimension, and the material part of the
-// return-mapping constants (the node part, yield and bm, is set per node).
-struct J2Flow {
-  // beta: does the dilatation see the plastic extension (Eq. 16)? 3D: either way (sum x e^dp = 0 for
-  // omega = 1). Plane stress: yes. Plane strain: no -- only then is the in-plane mean stress classical
-  // (see docs/materials.md).
-  bool beta;
-  // phi: weight of the x-component (t.x) x/m of the flow direction. 1 = Eq. 52 (3D, plane strain);
-  // plane stress needs 2 to follow the 3D J2 flow with sigma_zz = 0 (sigma_zz-free eps_p_zz).
-  double phi;
-  OsbJ2Constants ret;
-};
-
 J2Flow j2Flow(const J2Parameters& p) {
   const OsbConstants& c = p.osb;
   J2Flow f;
@@ -179,12 +163,14 @@ J2Flow j2Flow(const J2Parameters& p) {
   return f;
 }
 
-// The weighted volume the yield-surface constants are written with (YieldNormalization).
 double yieldVolume(const FamilyView& fam, const J2Parameters& p, double m) {
+  constexpr double kPi = 3.14159265358979323846;
   if (p.norm != YieldNormalization::Continuum) return m;
   const double d = fam.horizon;
   return p.dim == Dimension::ThreeD ? 0.8 * kPi * d * d * d * d * d : 0.5 * kPi * p.thickness * d * d * d * d;
 }
+
+namespace {
 
 [[noreturn]] void throwReturnFailure(const OsbJ2Return& r, double committedQ, int maxIterations, int i) {
   std::ostringstream msg;
@@ -195,25 +181,6 @@ double yieldVolume(const FamilyView& fam, const J2Parameters& p, double m) {
     msg << "J2 return mapping did not converge in " << maxIterations << " iterations at node " << i
         << " (trial von Mises " << r.vonMisesTrial << ", yield level " << r.yieldLevel << ")";
   throw ConstitutiveFailure(msg.str());
-}
-
-// Writes the trial deviatoric force state t^d_tr = omega bm (e - c theta_tr x - e^dp_n) (Eqs. 40-41) to
-// tdv and returns its moments but x.x, bond k in partial sum k mod kLanes.
-template <bool Unit>
-PF_INLINE OsbTrialMoments trialDeviatoricState(const double* __restrict w, const double* __restrict xr,
-                                               const double* __restrict len, const double* __restrict epN,
-                                               const double* __restrict vj, double bm, double cth, int n,
-                                               bool inBlock, double* __restrict tdv) {
-  osb::Lanes S2 = {}, Sx = {}, S3 = {}, A3 = {};
-  osb::forEachChunk(n, inBlock, [&](int k, auto c) {
-    const osb::Lanes x = c.load(xr + k), v = c.load(vj + k);
-    const osb::Lanes bmv = osb::Lanes{} + bm;
-    const osb::Lanes td = osb::weighted<Unit>(c, w, k, bmv) * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
-    const osb::Lanes tv = td * v;
-    osb::FullChunk{}.store(tdv + k, td);  // scratch: padded to whole chunks
-    S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += osb::absLanes(td) * td * tv;
-  });
-  return {osb::laneSum(S2), osb::laneSum(Sx), osb::laneSum(S3), osb::laneSum(A3), 0.0};
 }
 
 // e^dp_n+1 = e^dp_n + a1 (t^d - pp x) + a2 x (Eqs. 52, 58: the returned t_perp and pp x scaled by
@@ -282,21 +249,10 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
   const bool inBlock = osb::chunksStayInBlock(fam, i);
   const double m = fam.weightedVolume[i];
   const double invm = 1.0 / m;
-  OsbJ2Constants k = flow.ret;
-  k.yield = osbYieldConstants(p.dim, yieldVolume(fam, p, m));
-  // Peridigm's correction: deviatoric modulus times s, yield value times s^2 (exact no-ops when off).
-  const double B = s.scf ? c.B * s.scf[i] : c.B;
-  k.bm = B * invm;  // -B of Eq. 48 (B here is 15 mu or 8 mu)
-  if (s.scf) k.yield.Cy *= s.scf[i] * s.scf[i];
-
-  // Trial dilatation from the committed plastic extension (Eqs. 4/16); same operations as
-  // osbDilatation so that the elastic response is bit-identical to "Elastic".
-  // x.x (Eq. 41) comes out of the same pass.
-  double Xx = 0.0;
-  const double trialSum = osb::dilatationSum<Unit>(w, xr, len, flow.beta ? epN : nullptr, vj, n, inBlock, &Xx);
-  const double thetaTr = c.k * c.D * trialSum / m;
-  OsbTrialMoments trial = trialDeviatoricState<Unit>(w, xr, len, epN, vj, k.bm, c.c * thetaTr, n, inBlock, tdv);
-  trial.Xx = Xx;
+  const J2NodeTrial tr = j2NodeTrial<Unit>(fam, p, flow, s.scf, epN, i, scr, tdv);
+  const OsbJ2Constants& k = tr.k;
+  const double B = tr.B, thetaTr = tr.thetaTr;
+  const OsbTrialMoments& trial = tr.moments;
 
   const OsbJ2Return r = returnMapping(trial, committedState(s, i), k);  // osbJ2ReturnMapping, inlined
   if (r.status != OsbJ2Status::Ok) throwReturnFailure(r, s.qN[i], p.maxIterations, i);

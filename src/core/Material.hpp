@@ -36,9 +36,10 @@ class Material {
   virtual void stiffnessBound(const FamilyView& fam, double* bound) const = 0;
 
   // The exact directional derivative of computeForce at deformed positions y along dy (3 per overlap
-  // node): adds dF to dforce with the same two-ended accumulation. Reads the committed state (the
-  // linearisation point of an elastic step). Only called when hasForceDerivative(); models without an
-  // exact tangent leave both alone and the implicit solver differentiates the residual numerically.
+  // node): adds dF to dforce with the same two-ended accumulation. Reads the committed state, held fixed: a
+  // history-dependent model differentiates its whole update from it at y (the J2 models: the consistent
+  // tangent of the return mapping). Only called when hasForceDerivative(); models without an exact tangent
+  // leave both alone and the implicit solver differentiates the residual numerically.
   virtual bool hasForceDerivative() const { return false; }
   virtual bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                                double* dforce) const {

@@ -80,13 +80,14 @@ class StepProblem : public NOX::Epetra::Interface::Required, public NOX::Epetra:
 };
 
 // The Jacobian of StepProblem's residual, applied matrix-free: -df + c dx on free rows, s dx on prescribed ones.
-// df is the materials' exact forceDerivative where all have one; otherwise a forward difference of the
+// df is the materials' exact forceDerivative where all have one (and the deck did not ask for the difference,
+// NewtonKrylovOptions::exactJacobian); otherwise a forward difference of the
 // force whose perturbation is scaled to the model's length (1e-7 of the shortest bond): NOX's own
 // matrix-free operator scales it by |x|, which is ~0 at the first load step and gives no derivative.
 class TangentOperator : public Epetra_Operator, public NOX::Epetra::Interface::Jacobian {
  public:
-  TangentOperator(Model& model, const Epetra_Map& map, double scale, const Inertia* inertia)
-      : model_(model), map_(map), scale_(scale), inertia_(inertia), exact_(model.hasExactTangent()), u_(model.numDofs()),
+  TangentOperator(Model& model, const Epetra_Map& map, double scale, const Inertia* inertia, bool exact)
+      : model_(model), map_(map), scale_(scale), inertia_(inertia), exact_(exact && model.hasExactTangent()), u_(model.numDofs()),
         du_(model.numDofs()), df_(model.numDofs()), f0_(model.numDofs()), up_(model.numDofs()) {
     double shortest = std::numeric_limits<double>::max();
     for (double r : model.layout().family().refLength) shortest = std::min(shortest, r);
@@ -248,7 +249,7 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
     M = lin.prec;
   }
 
-  auto tangent = Teuchos::rcp(new TangentOperator(model, map, scale, inertia));
+  auto tangent = Teuchos::rcp(new TangentOperator(model, map, scale, inertia, opt_.exactJacobian));
   auto linSys = Teuchos::rcp(new NOX::Epetra::LinearSystemAztecOO(print, ls, tangent, tangent, problem, M, noxX0));
   auto group = Teuchos::rcp(new NOX::Epetra::Group(print, problem, noxX0, linSys));
 

@@ -17,6 +17,10 @@ struct NewtonKrylovOptions {
   double absoluteTolerance = 0.0;    // on the residual force-density norm (Peridigm's unit)
   int maxIterations = 30;            // Newton iterations per solve
   bool verbose = false;              // print NOX's residual history
+  // The Krylov operator: the materials' exact directional derivative (forceDerivative) where every block's
+  // material has one, else a forward difference of the force; false: the forward difference always (the
+  // deck's `Jacobian` = `Finite Difference`, for comparisons).
+  bool exactJacobian = true;
   // The preconditioner matrix keeps only each node's bonds up to this many times its shortest bond
   // (the grid spacing), stiffened to keep the second moment (the smooth-mode stiffness). Measured: at
   // delta/dx = 5 a radius of 3 dx halves the wall time (20 % more Krylov iterations); at delta/dx = 3

@@ -30,6 +30,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
   o.maxCuts = static_cast<int>(p.get("Maximum Load Step Cuts", o.maxCuts));
   o.newton.verbose = p.flag("Verbose");
   o.newton.precBondRadius = p.get("Preconditioner Bond Radius", o.newton.precBondRadius);
+  if (p.has("Jacobian")) o.newton.exactJacobian = p.text("Jacobian") == "Exact";
   o.newton.nox = passThrough;
   if (p.has("Nonlinear Solver")) {
     ParamTree::Entry e;
@@ -58,6 +59,11 @@ SolverEntry NoxQuasiStaticSolver::entry() {
   e.parameters.push_back(S::text("Nonlinear Solver", "NOX's (default `Line Search Based`)"));
   e.parameters.push_back(S::real("Preconditioner Bond Radius", "the preconditioner keeps bonds up to this many shortest "
                                                                "bonds long").byDefault("3").atLeast(1));
+  e.parameters.push_back(S::text("Jacobian", "the Krylov operator: `Exact` = the materials' directional derivative "
+                                             "(consistent tangent of the plastic models) where every block's material "
+                                             "has one, else a forward difference; `Finite Difference` = always the "
+                                             "forward difference of the force (for comparisons)")
+                             .oneOf({"Exact", "Finite Difference"}).byDefault("Exact"));
   e.passThrough = {"Direction", "Line Search", "Printing", "Solver Options"};
   e.create = create;
   return e;
