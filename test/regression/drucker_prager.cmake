@@ -90,3 +90,14 @@ periforge_run(drucker_uniaxial_band_np1 ${DPEX}/uniaxial_elastic_band.xml 1)
 periforge_check(drucker_uniaxial_band_np1_check drucker_uniaxial_band_np1
   ${PY} ${DPEX}/uniaxial_check.py
   ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_uniaxial_band_np1/uniaxial_elastic_band.e --bound 0.01)
+
+# 'Surface Correction' = 'NDO Band' on a model without a first Piola stress (Elastic, OSB): one 'input error' line
+# naming the block and the material, non-zero exit, at np 1 and 2 (no rank left waiting).
+foreach(np 1 2)
+  set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_band_wrong_material_np${np})
+  file(MAKE_DIRECTORY ${wd})
+  add_test(NAME drucker_band_wrong_material_np${np}
+           COMMAND ${MPIRUN} -np ${np} ${PERIFORGE_EXE} ${REG}/drucker_prager/band_wrong_material.xml WORKING_DIRECTORY ${wd})
+  set_tests_properties(drucker_band_wrong_material_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 60
+    PASS_REGULAR_EXPRESSION "input error: [^ ]*band_wrong_material.xml: Blocks/Plate: 'Surface Correction' = 'NDO Band': material 'Elastic Soil' \\(Elastic\\) has no first Piola stress")
+endforeach()
