@@ -44,8 +44,9 @@ void addCorrespondenceForce(const FamilyView& fam, int i, const Mat3& A, double*
 // one-pass model, which adds its own reactions to i and receives i's as f_j -= T_i V_i). The sums run in
 // the family's order whatever the partition.
 constexpr int kRowA = 0, kRowF = 9, kRowC = 18, kRowFlag = 19, kGatherRow = 20;
-// With the NDO band the row also holds P (9 values, row-major) at kRowP.
-constexpr int kRowP = 20, kBandRow = 29;
+// With the NDO band the row also holds P (9 values, row-major) at kRowP and the node's own K^-1 at kRowKinv (K is
+// constant: completeForce reads it instead of rebuilding it from the family on every evaluation).
+constexpr int kRowP = 20, kRowKinv = 29, kBandRow = 38;
 void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force);
 
 // Li & Geng (seed 003) Eqs. 31-32 for owned node i of the surface band (fam.band): the NDO divergence

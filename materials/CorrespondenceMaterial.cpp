@@ -182,7 +182,10 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
       std::copy(F[k].begin(), F[k].end(), row + kRowF);
       row[kRowC] = c;
       row[kRowFlag] = 1.0;
-      if (fam.band) std::copy(P.begin(), P.end(), row + kRowP);
+      if (fam.band) {
+        std::copy(P.begin(), P.end(), row + kRowP);
+        std::copy(Kinv[k].begin(), Kinv[k].end(), row + kRowKinv);
+      }
     } else {
       addCorrespondenceForce(fam, i, A, force);
       addHourglassForce(fam, i, y, F[k], c, force);
@@ -204,10 +207,12 @@ int CorrespondenceMaterial::exchangeWidth(const FamilyView& fam) const { return 
 
 void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* y, StateStore&, double* force) const {
   for (int i = fam.begin; i < fam.end; ++i)
-    if (fam.band && fam.band[i] != 0.0)
-      addBandForce(fam, i, y, shapeAndGradient(fam, i, fam.x, isPlanar(dim_)).Kinv, fam.exchange, fam.exchangeStride,
-                   force);
-    else
+    if (fam.band && fam.band[i] != 0.0) {
+      const double* row = fam.exchange + static_cast<std::size_t>(fam.exchangeStride) * i + kRowKinv;
+      Mat3 Kinv;
+      std::copy(row, row + 9, Kinv.begin());
+      addBandForce(fam, i, y, Kinv, fam.exchange, fam.exchangeStride, force);
+    } else
       addGatheredForce(fam, i, y, fam.exchange, fam.exchangeStride, force);
 }
 

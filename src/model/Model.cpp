@@ -33,7 +33,7 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     std::vector<FamilyView> views;
     std::vector<bool> planar;
     for (const BlockModel& b : blocks_) {
-      views.push_back(makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon));
+      views.push_back(blockView(b));  // band_ is not set yet: the plain view
       planar.push_back(isPlanar(b.material->dimension()));
     }
     band_ = std::make_unique<SurfaceBand>(buildSurfaceBand(*layout_, views, planar));

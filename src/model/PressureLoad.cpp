@@ -57,16 +57,17 @@ std::vector<NodalLoad> pressureLoads(const Model& model, const std::vector<int>&
     loads[c].coordinate = c;
     loads[c].value = pressure;
   }
-  // The axes in which the whole set is flat (reference extent below a quarter layer): collective.
+  // With the band: the axes in which the whole set is flat (reference extent below a quarter layer). Collective
+  // (every rank has the same band or none).
+  const SurfaceBand* band = model.surfaceBand();
   const std::vector<double>& x = model.coordinates();
-  bool flat[3], anyFlat = false;
-  for (int c = 0; c < 3; ++c) {
+  bool flat[3] = {false, false, false}, anyFlat = false;
+  for (int c = 0; c < 3 && band; ++c) {
     double lo = HUGE_VAL, hi = -HUGE_VAL;
     for (int i : nodes) lo = std::fmin(lo, x[3 * i + c]), hi = std::fmax(hi, x[3 * i + c]);
     flat[c] = model.max(hi) + model.max(-lo) <= 0.25 * layerThickness;
     anyFlat = anyFlat || flat[c];
   }
-  const SurfaceBand* band = model.surfaceBand();
   collectively(model.layout().comm(), [&] {
     for (int i : nodes) {
       double d[3];
