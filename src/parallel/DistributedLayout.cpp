@@ -1,9 +1,5 @@
 #include "DistributedLayout.hpp"
 
-#include <Epetra_BlockMap.h>
-#include <Epetra_Export.h>
-#include <Epetra_Import.h>
-#include <Epetra_Vector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,26 +14,9 @@
 #include "discretization/PartialVolume.hpp"
 #include "discretization/SpaceFillingCurve.hpp"
 #include "parallel/Collective.hpp"
-#include "parallel/CommunicatorImpl.hpp"
+#include "parallel/GhostTransfers.hpp"
 
 namespace pf {
-
-// Maps and transfers for 1- and 3-component data, index = ncomp == 3.
-// The rank-0 maps (every point on rank 0) are built by the first gatherToRoot only: the Exodus output no
-// longer needs them (parallel/ChunkedGather.hpp), so a run without checkpoints never holds them.
-struct DistributedLayout::Transfers {
-  std::unique_ptr<Epetra_BlockMap> owned[2], overlap[2];
-  std::unique_ptr<Epetra_Import> import[2];
-  mutable std::unique_ptr<Epetra_BlockMap> root[2];
-  mutable std::unique_ptr<Epetra_Import> rootImport[2];
-  std::unique_ptr<Epetra_Export> exporter[2];
-  // Imports of other widths (a two-phase model's per-node rows), built on first use.
-  struct Wide {
-    std::unique_ptr<Epetra_BlockMap> owned, overlap;
-    std::unique_ptr<Epetra_Import> import;
-  };
-  mutable std::map<int, Wide> wide;
-};
 
 DistributedLayout::~DistributedLayout() = default;
 
@@ -174,64 +153,18 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
   buildTransfers();
 }
 
-void DistributedLayout::buildTransfers() {
-  auto t = std::make_unique<Transfers>();
-  const Epetra_MpiComm& ecomm = comm_.impl().epetra;
-  for (int k = 0; k < 2; ++k) {
-    const int ncomp = k == 1 ? 3 : 1;
-    t->owned[k].reset(new Epetra_BlockMap(-1, numOwned_, gids_.data(), ncomp, 0, ecomm));
-    t->overlap[k].reset(new Epetra_BlockMap(-1, numOverlap(), gids_.data(), ncomp, 0, ecomm));
-    t->import[k].reset(new Epetra_Import(*t->overlap[k], *t->owned[k]));
-    t->exporter[k].reset(new Epetra_Export(*t->overlap[k], *t->owned[k]));
-  }
-  transfers_ = std::move(t);
-}
+void DistributedLayout::buildTransfers() { transfers_ = makeGhostTransfers(comm_, numOwned_, gids_, numGlobal_); }
 
 void DistributedLayout::importToOverlap(const double* owned, double* overlap, int ncomp) const {
-  const Epetra_BlockMap *ownedMap, *overlapMap;
-  const Epetra_Import* import;
-  if (ncomp == 1 || ncomp == 3) {
-    const int k = ncomp == 3 ? 1 : 0;
-    ownedMap = transfers_->owned[k].get(), overlapMap = transfers_->overlap[k].get();
-    import = transfers_->import[k].get();
-  } else {
-    Transfers::Wide& w = transfers_->wide[ncomp];
-    if (!w.import) {  // every rank asks for the same width at the same call: the construction is collective
-      const Epetra_MpiComm& ecomm = comm_.impl().epetra;
-      w.owned.reset(new Epetra_BlockMap(-1, numOwned_, gids_.data(), ncomp, 0, ecomm));
-      w.overlap.reset(new Epetra_BlockMap(-1, numOverlap(), gids_.data(), ncomp, 0, ecomm));
-      w.import.reset(new Epetra_Import(*w.overlap, *w.owned));
-    }
-    ownedMap = w.owned.get(), overlapMap = w.overlap.get(), import = w.import.get();
-  }
-  Epetra_Vector src(View, *ownedMap, const_cast<double*>(owned));
-  Epetra_Vector dst(View, *overlapMap, overlap);
-  if (dst.Import(src, *import, Insert) != 0) throw std::runtime_error("Epetra Import to ghosts failed");
+  transfers_->importToOverlap(owned, overlap, ncomp);
 }
 
 void DistributedLayout::exportAdd(const double* overlap, double* owned, int ncomp) const {
-  const int k = ncomp == 3 ? 1 : 0;
-  Epetra_Vector src(View, *transfers_->overlap[k], const_cast<double*>(overlap));
-  Epetra_Vector dst(View, *transfers_->owned[k], owned);
-  dst.PutScalar(0.0);
-  if (dst.Export(src, *transfers_->exporter[k], Add) != 0) throw std::runtime_error("Epetra Export from ghosts failed");
+  transfers_->exportAdd(overlap, owned, ncomp);
 }
 
 std::vector<double> DistributedLayout::gatherToRoot(const double* owned, int ncomp) const {
-  const int k = ncomp == 3 ? 1 : 0;
-  if (!transfers_->rootImport[k]) {  // collective, as every gatherToRoot
-    std::vector<int> all(comm_.rank() == 0 ? numGlobal_ : 0);
-    std::iota(all.begin(), all.end(), 0);
-    transfers_->root[k].reset(new Epetra_BlockMap(-1, static_cast<int>(all.size()), all.data(), ncomp, 0,
-                                                  comm_.impl().epetra));
-    transfers_->rootImport[k].reset(new Epetra_Import(*transfers_->root[k], *transfers_->owned[k]));
-  }
-  std::vector<double> out(comm_.rank() == 0 ? static_cast<std::size_t>(ncomp) * numGlobal_ : 0);
-  Epetra_Vector src(View, *transfers_->owned[k], const_cast<double*>(owned));
-  Epetra_Vector dst(View, *transfers_->root[k], out.data());
-  if (dst.Import(src, *transfers_->rootImport[k], Insert) != 0)
-    throw std::runtime_error("Epetra gather to rank 0 failed");
-  return out;
+  return transfers_->gatherToRoot(owned, ncomp);
 }
 
 }  // namespace pf

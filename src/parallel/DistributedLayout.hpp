@@ -1,6 +1,6 @@
 #pragma once
 // The points' distribution over ranks: owned and overlap (owned + ghost) points, copying owned values to
-// ghosts and adding ghost contributions back (Epetra maps, Import and Export, kept in the .cpp). Owned
+// ghosts and adding ghost contributions back (parallel/GhostTransfers: Epetra's or Tpetra's). Owned
 // points are ordered by block, then along a Hilbert curve, so a family sits close in memory; bonds of
 // the owned points are built here once, on reference positions, in overlap-local indices.
 #include <array>
@@ -10,6 +10,7 @@
 #include "core/BondFamily.hpp"
 #include "core/InfluenceFunction.hpp"
 #include "parallel/Communicator.hpp"
+#include "parallel/GhostTransfers.hpp"
 
 namespace pf {
 
@@ -56,14 +57,13 @@ class DistributedLayout {
   double max(double v) const { return comm_.max(v); }
 
  private:
-  void buildTransfers();  // owned, overlap and rank-0 maps with their Import/Export
+  void buildTransfers();  // owned, overlap and rank-0 maps with their Import/Export (GhostTransfers)
   Communicator comm_;
   int numOwned_ = 0, numGlobal_ = 0, numGhostSources_ = 0;
   std::vector<int> gids_;
   std::vector<BlockRange> blocks_;
   BondFamily family_;
-  struct Transfers;                     // Epetra maps, Import and Export (DistributedLayout.cpp)
-  std::unique_ptr<const Transfers> transfers_;
+  std::unique_ptr<const GhostTransfers> transfers_;
 };
 
 }  // namespace pf
