@@ -34,20 +34,20 @@ DU = 1e-6            # u per load step in the first phase [m]
 N1 = 50              # first-phase load steps (u to 0.05 mm)
 
 
-def u_law(steps, sign=1):
-    """sign * u(t), u per edge, t = load step: DU per step to N1 steps, then to 5 mm over the rest."""
+def u_law(steps, sign=1, du=DU):
+    """sign * u(t), u per edge, t = load step: du per step to N1 steps, then to 5 mm over the rest."""
     sg = "-" if sign < 0 else ""
     if steps <= N1:
-        return f"{sg}{DU:.10g}*t"
+        return f"{sg}{du:.10g}*t"
     rate = (5e-3 - N1 * DU) / (steps - N1)
     return (f"if (t &lt;= {N1}) {{ value = {sg}{DU:.10g}*t; }} "
             f"else {{ value = {sg}({N1 * DU:.10g} + {rate:.10g}*(t - {N1})); }}")
 
 
-def deck(name, dx, band, steps=N1, tol=1e-6, note=""):
+def deck(name, dx, band, steps=N1, tol=1e-6, note="", du=DU):
     hourglass = 0.25
     band_param = '\n      <Parameter name="Surface Correction" type="string" value="NDO Band"/>' if band else ""
-    u = u_law(steps)
+    u = u_law(steps, 1, du)
     face = lambda n, f: (f'    <ParameterList name="{n}"><Parameter name="Type" type="string" value="Node Set Region"/>'
                          f'<Parameter name="Face" type="string" value="{f}"/></ParameterList>\n')
     mid = lambda n, y0, y1: (f'    <ParameterList name="{n}"><Parameter name="Type" type="string" value="Node Set Region"/>\n'
@@ -106,7 +106,7 @@ def deck(name, dx, band, steps=N1, tol=1e-6, note=""):
     </ParameterList>
   </ParameterList>
   <ParameterList name="Boundary Conditions">
-{face("Top", "Max Y")}{face("Bottom", "Min Y")}{mid("Top Middle", L - dx / 4, L + dx / 4)}{mid("Bottom Middle", -dx / 4, dx / 4)}{bc("Top Y", "Top", "y", u_law(steps, -1))}{bc("Bottom Y", "Bottom", "y", u)}{bc("Top Middle X", "Top Middle", "x", "0.0")}{bc("Bottom Middle X", "Bottom Middle", "x", "0.0")}  </ParameterList>
+{face("Top", "Max Y")}{face("Bottom", "Min Y")}{mid("Top Middle", L - dx / 4, L + dx / 4)}{mid("Bottom Middle", -dx / 4, dx / 4)}{bc("Top Y", "Top", "y", u_law(steps, -1, du))}{bc("Bottom Y", "Bottom", "y", u)}{bc("Top Middle X", "Top Middle", "x", "0.0")}{bc("Bottom Middle X", "Bottom Middle", "x", "0.0")}  </ParameterList>
   <ParameterList name="Solver">
     <Parameter name="Initial Time" type="double" value="0.0"/>
     <Parameter name="Final Time" type="double" value="{steps:.1f}"/>
@@ -141,13 +141,16 @@ def deck(name, dx, band, steps=N1, tol=1e-6, note=""):
 
 if __name__ == "__main__":
     here = os.path.dirname(os.path.abspath(__file__))
-    decks = [("plate_hole_band", 1.25e-3, True, N1, ""), ("plate_hole", 1.25e-3, False, N1, ""),
-             # the ctest deck: dx = 2.5 mm (the hole's radius 2 dx), the first 30 um
-             ("plate_hole_coarse_band", 2.5e-3, True, 30, " Regression deck (ctest drucker_hole_*)."),
-             ("plate_hole_coarse", 2.5e-3, False, 30, ""),
+    decks = [("plate_hole_band", 1.25e-3, True, N1, "", DU), ("plate_hole", 1.25e-3, False, N1, "", DU),
+             # the ctest deck: dx = 2.5 mm (the hole's radius 2 dx), 16 steps of 3 um (to 0.048 mm: P1 and P3 yield)
+             ("plate_hole_coarse_band", 2.5e-3, True, 16, " Regression deck (ctest drucker_hole_*).", 3e-6),
+             ("plate_hole_coarse", 2.5e-3, False, 16, "", 3e-6),
+             # the elastic step at dx = 0.625 mm (R = 8 dx): the convergence of the elastic stress at the points
+             ("plate_hole_elastic_fine_band", 0.625e-3, True, 1, " One elastic step.", DU),
+             ("plate_hole_elastic_fine", 0.625e-3, False, 1, " One elastic step.", DU),
              # to the paper's 5 mm: 50 steps of 1 um, then 50 of 99 um (run only if time allows; plate_hole.md)
-             ("plate_hole_band_full", 1.25e-3, True, 100, "")]
-    for name, dx, band, steps, note in decks:
+             ("plate_hole_band_full", 1.25e-3, True, 100, "", DU)]
+    for name, dx, band, steps, note, du in decks:
         with open(os.path.join(here, name + ".xml"), "w") as f:
-            f.write(deck(name, dx, band, steps, 1e-6, note))
+            f.write(deck(name, dx, band, steps, 1e-6, note, du))
         print(name)

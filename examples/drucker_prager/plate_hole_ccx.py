@@ -11,10 +11,11 @@ square's boundary (the 45 degree ray runs to the corner), graded towards the hol
 
 usage: plate_hole_ccx.py [--refine K] [--keep]
   writes plate_hole_ccx.inp (K = 1, the committed input) or a refined mesh in a temporary directory, runs ccx and
-  writes plate_hole_fe_reference.csv (K = 1) with the stress at the paper's three monitoring points, mirrored
-  into the quarter: point 1 at the hole's left edge (-R, 0) -> (R, 0); point 2 at its upper edge (0, R);
-  point 3 on the plate's diagonal at (-7.5, 7.5) mm -> (7.5, 7.5) mm (r = 1.5 sqrt(2) R), interpolated along
-  the 45 degree grid line. Also the closed form (Kirsch's infinite plate) at the same points.
+  writes plate_hole_fe_reference.csv (K = 1) with the stress at the paper's three monitoring points (from the
+  hole's centre): point 1 at the hole's left edge (-R, 0); point 2 at its upper edge (0, R); point 3 on the
+  plate's diagonal at (-7.5, 7.5) mm (r = 1.5 sqrt(2) R), interpolated along the 45 degree grid line. The quarter
+  holds their mirror images (|x|, y), where sigma_xy changes sign. Also the closed form (Kirsch's infinite
+  plate) at the same points.
   Stress per unit imposed displacement of one edge (Pa/m): linear elasticity scales.
   --refine K  K times the elements in each direction (a convergence check; prints, writes nothing committed)
 """
@@ -30,7 +31,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 E, NU = 30e6, 0.25
 R, HALF = 5e-3, 50e-3        # hole radius, half the plate's side [m]
 U_REF = 1e-5                 # imposed displacement of each edge [m]
-POINTS = {"P1": (R, 0.0), "P2": (0.0, R), "P3": (7.5e-3, 7.5e-3)}
+# the monitoring points from the hole's centre, in the plate (make_plate_hole.py); the quarter model holds their
+# mirror images (|x|, y), where sigma_xy changes sign
+POINTS = {"P1": (-R, 0.0), "P2": (0.0, R), "P3": (-7.5e-3, 7.5e-3)}
 
 
 def outer(theta):
@@ -134,7 +137,8 @@ def solve(nt, nr, q, workdir, name):
         sys.exit("plate_hole_ccx.py: ccx failed:\n" + r.stdout[-2000:] + r.stderr[-2000:])
     st = read_frd_stress(os.path.join(workdir, name + ".frd"))
     res = {}
-    for p, (x, y) in POINTS.items():
+    for p, (xp, y) in POINTS.items():
+        x = abs(xp)
         if p == "P3":  # along the 45 degree ray: linear interpolation in r between its nodes
             ray = sorted((math.hypot(*nodes[n]), n) for n in sets["DIAG"])
             rr = math.hypot(x, y)
@@ -146,6 +150,8 @@ def solve(nt, nr, q, workdir, name):
         else:
             n = min(nodes, key=lambda k: math.hypot(nodes[k][0] - x, nodes[k][1] - y))
             res[p] = st[n]
+        if xp < 0:
+            res[p] = res[p][:3] + (-res[p][3],)
     return res, len(nodes), len(elems)
 
 

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -110,6 +111,68 @@ TEST(SurfaceBand, DifferenceFormIsExactDivergenceOfLinearPiola) {
         // Round-off of K^-1 and of ~10^2 terms of size |G| dx: 1e-9 of the traction scale P / dx (3e8 Pa/m).
         EXPECT_NEAR(f[3 * i + a], expect, 1e-9 * scale) << "node " << i << " component " << a;
       }
+  }
+}
+
+// A planar lattice of n x n points (spacing kDx, centred on the origin) minus a circular hole of radius r at the
+// origin (points with |x| < r removed, as Rectangle With Holes does), families built as makeLattice builds them.
+pftest::Lattice latticeWithHole(int n, double r) {
+  pftest::Lattice L;
+  L.planar = true, L.dx = kDx, L.horizon = 3.015 * kDx, L.thickness = kDx;
+  const double o = 0.5 * (n - 1);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = (i - o) * kDx, y = (j - o) * kDx;
+      if (std::hypot(x, y) < r * (1 - 1e-12)) continue;
+      L.x.insert(L.x.end(), {x, y, 0.0});
+      ++L.numNodes;
+    }
+  L.numQueries = L.numNodes;
+  L.volume.assign(L.numNodes, L.nodeVolume());
+  std::vector<double> candidates(L.x);
+  candidates.insert(candidates.end(), {0.0, 0.0, 2.0 * L.horizon + kDx});  // LatticeFixture's planar workaround
+  pf::buildFamilies(candidates, L.numQueries, std::vector<double>(L.numQueries, L.horizon), L.fam);
+  L.fam.numNodes = L.numNodes;
+  L.fam.influence.assign(L.fam.numBonds(), 1.0);
+  L.m.assign(L.numQueries, 0.0);
+  pf::computeWeightedVolume(L.view(), L.m.data());
+  return L;
+}
+
+// The hole of examples/drucker_prager/plate_hole_*: a lattice circle is a staircase. Each point's normal must be the
+// sum of the outward normals of its cell's exposed faces (the faces towards a removed or absent lattice neighbour),
+// so that sum_i n_i dx t is the staircase's closed-surface integral of N dA: zero around the hole, and the traction
+// term -P n / dx of a uniform stress balances over it. Checked for holes of radius 4 dx and 2 dx (points on the
+// circle: the plate decks at dx = 1.25 and 2.5 mm) and 5.5 dx and 2.5 dx (none on it): the normal at every point
+// against the face count, the hole's normals pointing into the hole (n . (c - x) > 0), and their sum zero.
+TEST(SurfaceBand, OuterNormalsAroundALatticeHoleAreTheStaircasesFaceNormals) {
+  for (double r : {4.0, 5.5, 2.0, 2.5}) {
+    SCOPED_TRACE("hole radius " + std::to_string(r) + " dx");
+    const int n = 25;
+    const pftest::Lattice L = latticeWithHole(n, r * kDx);
+    const Band b = outerLayer(L);
+    const double o = 0.5 * (n - 1);
+    auto present = [&](double x, double y) {  // a lattice point of the plate
+      const double i = x / kDx + o, j = y / kDx + o;
+      return i > -0.5 && i < n - 0.5 && j > -0.5 && j < n - 0.5 && std::hypot(x, y) >= r * kDx * (1 - 1e-12);
+    };
+    double sum[2] = {0, 0};
+    int holeLayer = 0;
+    for (int p = 0; p < L.numNodes; ++p) {
+      const double x = L.x[3 * p], y = L.x[3 * p + 1];
+      const double ex = (present(x + kDx, y) ? 0 : 1) - (present(x - kDx, y) ? 0 : 1);
+      const double ey = (present(x, y + kDx) ? 0 : 1) - (present(x, y - kDx) ? 0 : 1);
+      EXPECT_EQ(b.normal[3 * p], ex) << "x " << x / kDx << " dx, y " << y / kDx << " dx";
+      EXPECT_EQ(b.normal[3 * p + 1], ey) << "x " << x / kDx << " dx, y " << y / kDx << " dx";
+      EXPECT_NEAR(b.thickness[p], kDx, 1e-15);
+      if (std::hypot(x, y) > (r + 2) * kDx || (ex == 0 && ey == 0)) continue;  // the hole's layer only
+      ++holeLayer;
+      sum[0] += ex, sum[1] += ey;
+      EXPECT_GT(-(ex * x + ey * y), 0.0) << "normal not into the hole at x " << x / kDx << ", y " << y / kDx;
+    }
+    EXPECT_GE(holeLayer, 4);
+    EXPECT_EQ(sum[0], 0.0);
+    EXPECT_EQ(sum[1], 0.0);
   }
 }
 
