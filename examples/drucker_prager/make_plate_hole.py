@@ -149,7 +149,8 @@ if __name__ == "__main__":
              ("plate_hole_elastic_fine_band", 0.625e-3, True, 1, " One elastic step.", DU),
              ("plate_hole_elastic_fine", 0.625e-3, False, 1, " One elastic step.", DU),
              # to the paper's 5 mm: 50 steps of 1 um, then 50 of 99 um (run only if time allows; plate_hole.md)
-             ("plate_hole_band_full", 1.25e-3, True, 100, "", DU)]
+             ("plate_hole_band_full", 1.25e-3, True, 100, "", DU),
+             ("plate_hole_coarse_band_full", 2.5e-3, True, 100, "", DU)]
     for name, dx, band, steps, note, du in decks:
         with open(os.path.join(here, name + ".xml"), "w") as f:
             f.write(deck(name, dx, band, steps, 1e-6, note, du))
