@@ -15,7 +15,7 @@ Prints
     from the run's own first step, against the run's bracket (last elastic step, first plastic step);
   - P2's equivalent plastic strain at the end.
 
-usage: plate_hole_check.py RUN.csv [--elastic-bound R [--elastic-points P1,P2,P3]] [--onset-bound R]
+usage: plate_hole_check.py RUN.csv [--exo RUN.e] [--paper-onset U] [--elastic-bound R [--elastic-points P1,P2,P3]] [--onset-bound R]
                                    [--onset-self] [--p2-elastic] [--order]
   --elastic-bound R  exit 1 unless at P1 and P3 sigma_yy, and at P2 sigma_xx (each point's dominant component) of the
                      first step is within R (relative) of the FE value (only at the points of --elastic-points)
@@ -85,6 +85,12 @@ def main(a):
         if a.elastic_bound is not None and p in a.elastic_points.split(",") and abs(rel) > a.elastic_bound:
             print(f"FAIL: {p} s{DOMINANT[p].lower()} {100 * rel:+.1f} % off FE (bound {100 * a.elastic_bound:g} %)")
             ok = False
+    p2 = {c: g(rows[k1], "P2", "Unrotated_Cauchy_Stress" + c) for c in ("XX", "YY")}
+    lin = max(abs(g(r, p, "Unrotated_Cauchy_Stress" + DOMINANT[p]) / v / (g(rows[k1], p, "Unrotated_Cauchy_Stress" + DOMINANT[p]) / u1) - 1)
+              for p in POINTS for r, v in zip(rows, u) if v > 0 and g(r, p, "Equivalent_Plastic_Strain") == 0
+              and all(g(r, q, "Equivalent_Plastic_Strain") == 0 for q in POINTS))
+    print(f"  P2's sigma_yy / sigma_xx (0 at a free surface with normal y): {100 * p2['YY'] / p2['XX']:.1f} %; dominant stress per "
+          f"unit u over the steps before any point yields: within {lin:.1e} of the first step's")
     print(f"yield onset, u of one edge (m0 {M0:g}, A {A:.5f}, B {B:.1f} Pa; f = J - m0 (A I + B)):")
     first = {}
     for p in POINTS:
@@ -94,7 +100,15 @@ def main(a):
         first[p] = kp
         br = (f"run: elastic to u = {u[kp - 1] * 1e3:.4g} mm, plastic from {u[kp] * 1e3:.4g} mm" if kp is not None
               else f"run: elastic to the end (u = {u[-1] * 1e3:.4g} mm)")
+        if kp is not None:
+            br += f" (von Mises there {g(rows[kp], p, 'Von_Mises_Stress') / 1e3:.3f} kPa)"
         print(f"  {p}: FE-predicted {fe_on * 1e3:.5g} mm; from the run's elastic step {pd_on * 1e3:.5g} mm; {br}")
+        if p == "P1" and a.paper_onset:
+            # m0 with which the FE stress reaches f = 0 at the paper's onset: m0 (B + u A I1) = u J1
+            I1, J1 = invariants(*(float(ref[p][f"s{c}_per_m"]) for c in ("xx", "yy", "zz", "xy")))
+            for lab, uu in (("per edge", a.paper_onset), ("as the total shortening", a.paper_onset / 2)):
+                print(f"      m0 that puts P1's FE onset at the paper's {a.paper_onset * 1e3:g} mm {lab}: "
+                      f"{uu * J1 / (B + uu * A * I1):.4f}")
         if p == "P1" and a.onset_self and (kp is None or not u[kp - 1] < pd_on <= u[kp] * (1 + 1e-9)):
             print(f"FAIL: P1 does not yield in the step containing its own elastic prediction {pd_on * 1e3:.5g} mm")
             ok = False
@@ -102,6 +116,24 @@ def main(a):
             if kp is None or abs(u[kp] / fe_on - 1) > a.onset_bound or u[kp - 1] >= fe_on * (1 + a.onset_bound):
                 print(f"FAIL: P1's onset not within {100 * a.onset_bound:g} % of the FE prediction {fe_on * 1e3:.5g} mm")
                 ok = False
+    # far from the hole: uniaxial plane strain, sigma_xx = 0, sigma_zz = nu sigma_yy, sigma_yy = -E' 2u / L
+    from make_plate_hole import E, L, NU
+    s1 = -E / (1 - NU * NU) * 2 / L
+    print(f"  far field (no hole, sigma_xx = 0): {onset(0.0, s1, NU * s1, 0.0, 1.0) * 1e3:.5g} mm")
+    if a.exo:
+        import netCDF4
+        import numpy as np
+        d = netCDF4.Dataset(a.exo)
+        names = ["".join(c.decode() for c in n if c) for n in d.variables["name_elem_var"][:].data]
+        v = d.variables["vals_elem_var%deb1" % (names.index("Equivalent_Plastic_Strain") + 1)][:]
+        x, y, t = d.variables["coordx"][:], d.variables["coordy"][:], d.variables["time_whole"][:]
+        first = next((i for i in range(v.shape[0]) if (v[i] > 0).any()), None)
+        if first is not None:
+            pts = ", ".join(f"({x[j] * 1e3:g}, {y[j] * 1e3:g})" for j in np.where(v[first] > 0)[0][:8])
+            print(f"  first plastic points (output step {first}, u = {u[first] * 1e3:.4g} mm): {pts} mm")
+        for i in range(1, v.shape[0]):
+            if i == v.shape[0] - 1 or i % 10 == 0:
+                print(f"  plastic points at u = {u[i] * 1e3:.4g} mm: {int((v[i] > 0).sum())} of {v.shape[1]}")
     xi2 = g(rows[-1], "P2", "Equivalent_Plastic_Strain")
     print(f"  P2 equivalent plastic strain at the end: {xi2:.3g}")
     for p in POINTS:
@@ -128,10 +160,13 @@ def main(a):
 if __name__ == "__main__":
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("csv")
+    ap.add_argument("--exo", help="the run's .e: the first plastic points and the plastic count")
     ap.add_argument("--elastic-bound", type=float)
     ap.add_argument("--elastic-points", default="P1,P2,P3")
     ap.add_argument("--onset-bound", type=float)
     ap.add_argument("--onset-self", action="store_true")
+    ap.add_argument("--paper-onset", type=float, help="the paper's onset at point 1 [m] (0.011e-3): prints the m0 that "
+                    "puts the FE onset there")
     ap.add_argument("--p2-elastic", action="store_true")
     ap.add_argument("--order", action="store_true")
     sys.exit(main(ap.parse_args()))
