@@ -144,7 +144,8 @@ pftest::Lattice latticeWithHole(int n, double r) {
 // so that sum_i n_i dx t is the staircase's closed-surface integral of N dA: zero around the hole, and the traction
 // term -P n / dx of a uniform stress balances over it. Checked for holes of radius 4 dx and 2 dx (points on the
 // circle: the plate decks at dx = 1.25 and 2.5 mm) and 5.5 dx and 2.5 dx (none on it): the normal at every point
-// against the face count, the hole's normals pointing into the hole (n . (c - x) > 0), and their sum zero.
+// against the face count, the hole's normals pointing into the hole (n . (c - x) > 0), and their sum zero; and the
+// difference form's exactness for a linear Piola stress on the hole's truncated families.
 TEST(SurfaceBand, OuterNormalsAroundALatticeHoleAreTheStaircasesFaceNormals) {
   for (double r : {4.0, 5.5, 2.0, 2.5}) {
     SCOPED_TRACE("hole radius " + std::to_string(r) + " dx");
@@ -173,6 +174,30 @@ TEST(SurfaceBand, OuterNormalsAroundALatticeHoleAreTheStaircasesFaceNormals) {
     EXPECT_GE(holeLayer, 4);
     EXPECT_EQ(sum[0], 0.0);
     EXPECT_EQ(sum[1], 0.0);
+    // The difference form stays exact for a linear Piola stress on the staircase's truncated families too:
+    // f_i = div P - P(x_i) n_i / dx at every point (the square plate's test above, here with the hole).
+    const double P0[9] = {-3e5, 2e4, 0, 2e4, -1e5, 0, 0, 0, 0};
+    double G[9][3] = {};  // Pa/m
+    G[0][0] = 4e7, G[0][1] = -1e7, G[1][1] = 3e7, G[3][0] = 2e7, G[4][1] = -5e7, G[4][0] = 1e7;
+    const std::vector<double> rows = linearPiolaRows(L, P0, G);
+    Band bb = b;
+    pf::FamilyView v = L.view();
+    v.band = bb.flags.data(), v.outerNormal = bb.normal.data(), v.layerThickness = bb.thickness.data();
+    std::vector<double> f(L.x.size(), 0.0);
+    for (int i = 0; i < L.numQueries; ++i)
+      pf::addBandForce(v, i, L.x.data(), pf::shapeAndGradient(v, i, L.x.data(), true).Kinv, rows.data(),
+                       pf::kBandRow, f.data());
+    for (int i = 0; i < L.numQueries; ++i)
+      for (int a = 0; a < 2; ++a) {
+        double expect = 0;
+        for (int c = 0; c < 3; ++c) {
+          expect += G[3 * a + c][c];
+          double Pac = P0[3 * a + c];
+          for (int d = 0; d < 3; ++d) Pac += G[3 * a + c][d] * L.x[3 * i + d];
+          expect -= Pac * bb.normal[3 * i + c] / kDx;
+        }
+        EXPECT_NEAR(f[3 * i + a], expect, 1e-9 * 3e5 / kDx) << "node " << i << " component " << a;
+      }
   }
 }
 
