@@ -10,7 +10,7 @@ Loading. The paper: "a uniform displacement of u_y = 5 mm is applied to the top 
 each edge moving u(t) towards the centre (top -u, bottom +u), u = 5 mm at the end: the displacement is given to
 each boundary, and the symmetric form keeps the hole at rest. The paper's yield onsets (0.011 mm at point 1,
 0.021 mm at point 3) are a few thousandths of that 5 mm, so the decks resolve the first 0.05 mm of u with 50 load
-steps of 1 um (`plate_hole_*` decks end there; the _full deck continues to 5 mm in 50 more steps of 99 um).
+steps of 1 um (`plate_hole_*` decks end there; plate_hole_coarse_band_full continues to 5 mm in 50 more steps of 99 um).
 Top and bottom: u_y prescribed, u_x free (frictionless platens; the paper says nothing about u_x) except at the
 middle point of each, which holds u_x = 0 (no rigid motion). Vertical sides free.
 
@@ -148,8 +148,7 @@ if __name__ == "__main__":
              # the elastic step at dx = 0.625 mm (R = 8 dx): the convergence of the elastic stress at the points
              ("plate_hole_elastic_fine_band", 0.625e-3, True, 1, " One elastic step.", DU),
              ("plate_hole_elastic_fine", 0.625e-3, False, 1, " One elastic step.", DU),
-             # to the paper's 5 mm: 50 steps of 1 um, then 50 of 99 um (run only if time allows; plate_hole.md)
-             ("plate_hole_band_full", 1.25e-3, True, 100, "", DU),
+             # to the paper's 5 mm: 50 steps of 1 um, then 50 of 99 um (coarse: 267 s at np 1; plate_hole.md)
              ("plate_hole_coarse_band_full", 2.5e-3, True, 100, "", DU)]
     for name, dx, band, steps, note, du in decks:
         with open(os.path.join(here, name + ".xml"), "w") as f:
