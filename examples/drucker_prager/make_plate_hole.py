@@ -44,8 +44,12 @@ def u_law(steps, sign=1, du=DU):
             f"else {{ value = {sg}({N1 * DU:.10g} + {rate:.10g}*(t - {N1})); }}")
 
 
-def deck(name, dx, band, steps=N1, tol=1e-6, note="", du=DU):
-    hourglass = 0.25
+def deck(name, dx, band, steps=N1, tol=1e-6, note="", du=DU, side=None, hourglass=0.25):
+    """side: the plate's side [m] (default L); the hole and the monitoring points stay at the same place from
+    the plate's centre."""
+    L = side or globals()["L"]
+    off = (L - globals()["L"]) / 2
+    probes_at = {p: (x + off, y + off) for p, (x, y) in PROBES.items()}
     band_param = '\n      <Parameter name="Surface Correction" type="string" value="NDO Band"/>' if band else ""
     u = u_law(steps, 1, du)
     face = lambda n, f: (f'    <ParameterList name="{n}"><Parameter name="Type" type="string" value="Node Set Region"/>'
@@ -62,10 +66,10 @@ def deck(name, dx, band, steps=N1, tol=1e-6, note="", du=DU):
     probes = "".join(f'      <ParameterList name="{p}">\n        <Parameter name="X" type="double" value="{x:.10g}"/>\n'
                      f'        <Parameter name="Y" type="double" value="{y:.10g}"/>\n'
                      f'        <Parameter name="Variables" type="string" value="{PROBE_VARS}"/>\n      </ParameterList>\n'
-                     for p, (x, y) in PROBES.items())
+                     for p, (x, y) in probes_at.items())
     return f"""<ParameterList>
   <!-- Written by make_plate_hole.py (edit that, not this). Li & Geng (seed 003) Sec. 5.3.2: plane-strain plate
-       100 x 100 mm with a central hole of 10 mm diameter, compressed by the top and bottom edges, each moving
+       {L * 1e3:g} x {L * 1e3:g} mm with a central hole of 10 mm diameter, compressed by the top and bottom edges, each moving
        u(t) = {u.replace("&lt;", "<")} m towards the centre; dx = {dx * 1e3:g} mm; NDO band {"on" if band else "off"}.{note} -->
   <ParameterList name="Discretization">
     <Parameter name="Type" type="string" value="Rectangle With Holes"/>
@@ -154,3 +158,16 @@ if __name__ == "__main__":
         with open(os.path.join(here, name + ".xml"), "w") as f:
             f.write(deck(name, dx, band, steps, 1e-6, note, du))
         print(name)
+    # The band at Hourglass Coefficient 1.0: the band's operator has a growing mode at a lattice hole's staircase at
+    # 0.25 (test_surface_band, LinearisedForceAroundALatticeHole*; plate_hole.md), which 1.0 damps in these runs.
+    with open(os.path.join(here, "plate_hole_band_hg1.xml"), "w") as f:
+        f.write(deck("plate_hole_band_hg1", 1.25e-3, True, N1, 1e-6, " Hourglass Coefficient 1.0.", DU, None, 1.0))
+    print("plate_hole_band_hg1")
+    # The elastic step's convergence with dx at a lower cost: a 40 mm plate with the same hole (d/W = 0.25), R = 4,
+    # 8 and 16 dx, band on and off; reference plate_hole_ccx.py --side 0.04 (plate_hole_fe_reference_w40.csv).
+    for dx, tag in ((1.25e-3, "r4"), (0.625e-3, "r8"), (0.3125e-3, "r16")):
+        for band in (True, False):
+            name = f"plate_hole_w40_{tag}{'_band' if band else ''}"
+            with open(os.path.join(here, name + ".xml"), "w") as f:
+                f.write(deck(name, dx, band, 1, 1e-6, " One elastic step, 40 mm plate.", DU, 40e-3))
+            print(name)

@@ -36,6 +36,11 @@ U_REF = 1e-5                 # imposed displacement of each edge [m]
 POINTS = {"P1": (-R, 0.0), "P2": (0.0, R), "P3": (-7.5e-3, 7.5e-3)}
 
 
+def set_side(side):
+    global HALF
+    HALF = side / 2
+
+
 def outer(theta):
     """The square's boundary point on the ray at angle theta (0..pi/2) from the hole's centre."""
     if theta <= math.pi / 4 + 1e-15:
@@ -158,13 +163,17 @@ def solve(nt, nr, q, workdir, name):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--refine", type=int, default=1)
+    ap.add_argument("--side", type=float, default=0.1, help="the plate's side [m]; not 0.1: writes "
+                    "plate_hole_fe_reference_w<mm>.csv and plate_hole_ccx_w<mm>.inp")
     a = ap.parse_args()
+    set_side(a.side)
+    tag = "" if abs(a.side - 0.1) < 1e-12 else f"_w{a.side * 1e3:g}"
     k = a.refine
     nt, nr, q = 12 * k, 16 * k, 1.18 ** (1.0 / k)
     tmp = tempfile.mkdtemp(prefix="plate_hole_ccx_")
     res, nn, ne = solve(nt, nr, q, tmp, "plate_hole_ccx")
     if k == 1:
-        shutil.copy(os.path.join(tmp, "plate_hole_ccx.inp"), os.path.join(HERE, "plate_hole_ccx.inp"))
+        shutil.copy(os.path.join(tmp, "plate_hole_ccx.inp"), os.path.join(HERE, f"plate_hole_ccx{tag}.inp"))
     shutil.rmtree(tmp)
     # far-field reference stress: uniaxial plane strain under the imposed strain 2 U / L
     s_far = -E / (1 - NU * NU) * 2 * U_REF / (2 * HALF)
@@ -178,9 +187,9 @@ def main():
               f" Kirsch sxx {kx:9.3f} syy {ky:10.3f} sxy {kxy:9.3f};  FE syy / remote {syy / s_far:.4f}")
         lines.append(f"{p},{x * 1e3:g},{y * 1e3:g}," + ",".join(f"{v / U_REF:.8e}" for v in (sxx, syy, szz, sxy, kx, ky, kxy)))
     if k == 1:
-        with open(os.path.join(HERE, "plate_hole_fe_reference.csv"), "w") as f:
+        with open(os.path.join(HERE, f"plate_hole_fe_reference{tag}.csv"), "w") as f:
             f.write("\n".join(lines) + "\n")
-        print("wrote plate_hole_ccx.inp, plate_hole_fe_reference.csv")
+        print(f"wrote plate_hole_ccx{tag}.inp, plate_hole_fe_reference{tag}.csv")
 
 
 if __name__ == "__main__":

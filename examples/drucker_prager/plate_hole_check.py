@@ -65,7 +65,7 @@ def eq_strain(fxx, fyy, fxy, fyx):
 
 def main(a):
     rows = list(csv.DictReader(open(a.csv)))
-    ref = {r["point"]: r for r in csv.DictReader(open(os.path.join(HERE, "plate_hole_fe_reference.csv")))}
+    ref = {r["point"]: r for r in csv.DictReader(open(os.path.join(HERE, a.reference)))}
     g = lambda r, p, v: float(r[f"Probe_{p}_{v}"])
     u = [float(r["Applied_Displacement"]) for r in rows]
     print(f"{a.csv}: {len(rows)} rows, u (one edge) to {u[-1] * 1e3:.4g} mm")
@@ -117,8 +117,8 @@ def main(a):
                 print(f"FAIL: P1's onset not within {100 * a.onset_bound:g} % of the FE prediction {fe_on * 1e3:.5g} mm")
                 ok = False
     # far from the hole: uniaxial plane strain, sigma_xx = 0, sigma_zz = nu sigma_yy, sigma_yy = -E' 2u / L
-    from make_plate_hole import E, L, NU
-    s1 = -E / (1 - NU * NU) * 2 / L
+    from make_plate_hole import E, NU
+    s1 = -E / (1 - NU * NU) * 2 / a.side
     print(f"  far field (no hole, sigma_xx = 0): {onset(0.0, s1, NU * s1, 0.0, 1.0) * 1e3:.5g} mm")
     if a.exo:
         import netCDF4
@@ -160,6 +160,9 @@ def main(a):
 if __name__ == "__main__":
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("csv")
+    ap.add_argument("--side", type=float, default=0.1, help="the plate's side [m] (far-field onset)")
+    ap.add_argument("--reference", default="plate_hole_fe_reference.csv", help="FE reference in this directory "
+                    "(plate_hole_fe_reference_w40.csv for the plate_hole_w40_* decks)")
     ap.add_argument("--exo", help="the run's .e: the first plastic points and the plastic count")
     ap.add_argument("--elastic-bound", type=float)
     ap.add_argument("--elastic-points", default="P1,P2,P3")

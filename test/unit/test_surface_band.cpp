@@ -204,11 +204,15 @@ TEST(SurfaceBand, OuterNormalsAroundALatticeHoleAreTheStaircasesFaceNormals) {
 // The force of an Elastic Correspondence plate (plane strain, 9 x 9 points, delta = 3.015 dx: every point lies
 // in the band) in the two-phase form, with or without the band.
 struct Plate {
-  pftest::Lattice L = pftest::makeLattice(9, true, 5e-3, 3.015, 5e-3, pf::Influence(pf::Influence::One), false);
+  pftest::Lattice L;
   std::unique_ptr<pf::Material> mat;
-  Band b = outerLayer(L);
+  Band b;
   bool band;
-  Plate(bool withBand, double hourglass) : band(withBand) {
+  Plate(bool withBand, double hourglass)
+      : Plate(pftest::makeLattice(9, true, 5e-3, 3.015, 5e-3, pf::Influence(pf::Influence::One), false), withBand,
+              hourglass) {}
+  Plate(pftest::Lattice lattice, bool withBand, double hourglass)
+      : L(std::move(lattice)), b(outerLayer(L)), band(withBand) {
     mat = pf::makeMaterial("Elastic Correspondence",
                            {{"Density", 2000.0}, {"Young's Modulus", 30e6}, {"Poisson's Ratio", 0.25},
                             {"Hourglass Coefficient", hourglass}, {"Plane Strain", 1}, {"Thickness", 5e-3}});
@@ -234,17 +238,19 @@ struct Plate {
 // Largest real part of the eigenvalues of df/du over the in-plane dofs, relative to the largest eigenvalue
 // magnitude (central differences at the reference state). held: the bottom row's dofs are removed (a clamped
 // edge), else the biaxial test's supports (top and bottom y, one bottom point's x).
-double largestRealPart(const Plate& plate, bool clamped) {
+double largestRealPart(const Plate& plate, bool clamped, double* where = nullptr) {
   const pftest::Lattice& L = plate.L;
   std::vector<int> dofs;
-  const double e = 4 * L.dx - 1e-9;
+  double ymin = HUGE_VAL, ymax = -HUGE_VAL;
+  for (int p = 0; p < L.numNodes; ++p) ymin = std::min(ymin, L.x[3 * p + 1]), ymax = std::max(ymax, L.x[3 * p + 1]);
+  const double half = 0.5 * L.dx;
   for (int p = 0; p < L.numNodes; ++p) {
     const double x = L.x[3 * p], y = L.x[3 * p + 1];
     if (clamped) {
-      if (y > -e) dofs.push_back(3 * p), dofs.push_back(3 * p + 1);
+      if (y > ymin + half) dofs.push_back(3 * p), dofs.push_back(3 * p + 1);
     } else {
-      if (!(y < -e && std::fabs(x) < 1e-9)) dofs.push_back(3 * p);
-      if (std::fabs(y) < e) dofs.push_back(3 * p + 1);
+      if (!(y < ymin + half && std::fabs(x) < 1e-9)) dofs.push_back(3 * p);
+      if (y > ymin + half && y < ymax - half) dofs.push_back(3 * p + 1);
     }
   }
   const int n = static_cast<int>(dofs.size());
@@ -256,9 +262,20 @@ double largestRealPart(const Plate& plate, bool clamped) {
     const std::vector<double> fp = plate.force(yp), fm = plate.force(ym);
     for (int r = 0; r < n; ++r) J(r, c) = (fp[dofs[r]] - fm[dofs[r]]) / (2 * h);
   }
-  const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, where != nullptr);
+  const Eigen::VectorXcd ev = es.eigenvalues();
   double re = -HUGE_VAL, mag = 0;
-  for (int k = 0; k < n; ++k) re = std::max(re, ev[k].real()), mag = std::max(mag, std::abs(ev[k]));
+  int top = 0;
+  for (int k = 0; k < n; ++k) {
+    if (ev[k].real() > re) top = k;
+    re = std::max(re, ev[k].real()), mag = std::max(mag, std::abs(ev[k]));
+  }
+  if (where) {  // the point where the growing mode's amplitude is largest
+    const Eigen::VectorXcd v = es.eigenvectors().col(top);
+    int r = 0;
+    for (int k = 0; k < n; ++k) if (std::abs(v[k]) > std::abs(v[r])) r = k;
+    for (int d = 0; d < 2; ++d) where[d] = L.x[dofs[r] - dofs[r] % 3 + d];
+  }
   return re / mag;
 }
 
@@ -275,6 +292,30 @@ TEST(SurfaceBand, LinearisedForceIsStableWithTheBandDecksHourglass) {
   }
   std::printf("band at Hourglass Coefficient 0.05: largest Re / |lambda|max %.3g (a growing mode)\n",
               largestRealPart(Plate(true, 0.05), false));
+}
+
+// The same on a plate with a lattice hole (the staircase of examples/drucker_prager/plate_hole_*; 21 x 21 points, hole
+// of radius 5.5 dx, bottom row clamped, every point within the band). Without the band the linearised force is
+// stable (measured largest Re / |lambda|max -5.7e-4 at Hourglass Coefficient 0.25).
+TEST(SurfaceBand, LinearisedForceAroundALatticeHoleIsStableWithoutTheBand) {
+  EXPECT_LT(largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), false, 0.25), true), -1e-4);
+}
+
+// KNOWN DEFECT (examples/drucker_prager/plate_hole.md, "The band around the hole"): with the band the same plate has
+// a growing mode, largest where the hole's staircase runs diagonally: largest Re / |lambda|max +0.231 at Hourglass
+// Coefficient 0.25 (mode largest at (-5, 4) dx), +0.169 at 0.5, +0.062 at 1.0 (at (-4, 5) dx); on a 27 x 27 plate
+// with a hole of radius 8 dx +0.183 at 0.25 and +0.105 at 0.5 (largest near the free top corner, (-12, 12) dx),
+// +2.5e-4 at 1.0 (at the hole, (0, 8) dx). In the plate runs it shows as a point-to-point oscillation of the stress
+// along the staircase that grows with the hole's resolution (R = 16 dx at 0.25: sigma_xx from -41 to +24 kPa where
+// the plain model has -0.6 kPa). The band's difference form is not symmetric and the stabilisation that holds it
+// on the 9 x 9 plate above does not hold it on a staircase. Not fixed; enable this test when it is.
+TEST(SurfaceBand, DISABLED_LinearisedForceAroundALatticeHoleIsStableWithTheBand) {
+  for (double c : {0.25, 0.5, 1.0}) {
+    double at[2];
+    const double re = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), true, c), true, at);
+    EXPECT_LT(re, -1e-4) << "Hourglass Coefficient " << c << ": mode largest at (" << at[0] / kDx << ", "
+                         << at[1] / kDx << ") dx";
+  }
 }
 
 }  // namespace
