@@ -131,6 +131,17 @@ def main(a):
         if first is not None:
             pts = ", ".join(f"({x[j] * 1e3:g}, {y[j] * 1e3:g})" for j in np.where(v[first] > 0)[0][:8])
             print(f"  first plastic points (output step {first}, u = {u[first] * 1e3:.4g} mm): {pts} mm")
+        # the hole's edge in the first step: the points within 2 dx of the circle, in angle order (125..160 deg,
+        # the upper-left staircase): the band's growing mode shows as a point-to-point oscillation there
+        xs = np.unique(np.round(x, 9))
+        dxl = float(np.min(np.diff(xs)))
+        cx, cy = (x.max() + x.min()) / 2, (y.max() + y.min()) / 2
+        rr, th = np.hypot(x - cx, y - cy), np.degrees(np.arctan2(y - cy, x - cx))
+        sxx = d.variables["vals_elem_var%deb1" % (names.index("Unrotated_Cauchy_StressXX") + 1)][1]
+        sel = np.where((rr < 5e-3 + 2 * dxl) & (th > 125) & (th <= 160))[0]
+        sel = sel[np.argsort(th[sel])]
+        print(f"  hole edge (r < R + 2 dx), 125..160 deg, first step: sigma_xx {' '.join('%.0f' % sxx[j] for j in sel)} Pa "
+              f"({len(sel)} points, {float(sxx[sel].min()):.0f} .. {float(sxx[sel].max()):.0f} Pa)")
         for i in range(1, v.shape[0]):
             if i == v.shape[0] - 1 or i % 10 == 0:
                 print(f"  plastic points at u = {u[i] * 1e3:.4g} mm: {int((v[i] > 0).sum())} of {v.shape[1]}")
