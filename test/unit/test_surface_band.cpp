@@ -215,7 +215,7 @@ struct Plate {
       : L(std::move(lattice)), b(outerLayer(L)), band(withBand) {
     mat = pf::makeMaterial("Elastic Correspondence",
                            {{"Density", 2000.0}, {"Young's Modulus", 30e6}, {"Poisson's Ratio", 0.25},
-                            {"Hourglass Coefficient", hourglass}, {"Plane Strain", 1}, {"Thickness", 5e-3}});
+                            {"Hourglass Coefficient", hourglass}, {"Plane Strain", 1}, {"Thickness", L.thickness}});
     std::vector<double> flag(L.numNodes), once(L.numNodes);
     for (int p = 0; p < L.numNodes; ++p) flag[p] = b.normal[3 * p] != 0 || b.normal[3 * p + 1] != 0;
     pf::spreadOneHorizon(L.view(), flag.data(), once.data());
@@ -296,26 +296,26 @@ TEST(SurfaceBand, LinearisedForceIsStableWithTheBandDecksHourglass) {
 
 // The same on a plate with a lattice hole (the staircase of examples/drucker_prager/plate_hole_*; 21 x 21 points, hole
 // of radius 5.5 dx, bottom row clamped, every point within the band). Without the band the linearised force is
-// stable (measured largest Re / |lambda|max -5.7e-4 at Hourglass Coefficient 0.25).
-TEST(SurfaceBand, LinearisedForceAroundALatticeHoleIsStableWithoutTheBand) {
-  EXPECT_LT(largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), false, 0.25), true), -1e-4);
+// stable at Hourglass Coefficient 0.25; with the band it is stable from 1.0 (measured largest Re / |lambda|max
+// -1.55e-4 at 1.0, -4.4e-5 at 0.5: not clearly negative).
+TEST(SurfaceBand, LinearisedForceAroundALatticeHoleIsStableWithoutTheBandAndWithItAtOne) {
+  const double off = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), false, 0.25), true);
+  const double at1 = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), true, 1.0), true);
+  std::printf("hole 5.5 dx: no band at 0.25 %.3g, band at 1.0 %.3g\n", off, at1);
+  EXPECT_LT(off, -1e-4);
+  EXPECT_LT(at1, -1e-4);
 }
 
-// KNOWN DEFECT (examples/drucker_prager/plate_hole.md, "The band around the hole"): with the band the same plate has
-// a growing mode, largest where the hole's staircase runs diagonally: largest Re / |lambda|max +0.231 at Hourglass
-// Coefficient 0.25 (mode largest at (-5, 4) dx), +0.169 at 0.5, +0.062 at 1.0 (at (-4, 5) dx); on a 27 x 27 plate
-// with a hole of radius 8 dx +0.183 at 0.25 and +0.105 at 0.5 (largest near the free top corner, (-12, 12) dx),
-// +2.5e-4 at 1.0 (at the hole, (0, 8) dx). In the plate runs it shows as a point-to-point oscillation of the stress
-// along the staircase that grows with the hole's resolution (R = 16 dx at 0.25: sigma_xx from -41 to +24 kPa where
-// the plain model has -0.6 kPa). The band's difference form is not symmetric and the stabilisation that holds it
-// on the 9 x 9 plate above does not hold it on a staircase. Not fixed; enable this test when it is.
-TEST(SurfaceBand, DISABLED_LinearisedForceAroundALatticeHoleIsStableWithTheBand) {
-  for (double c : {0.25, 0.5, 1.0}) {
-    double at[2];
-    const double re = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), true, c), true, at);
-    EXPECT_LT(re, -1e-4) << "Hourglass Coefficient " << c << ": mode largest at (" << at[0] / kDx << ", "
-                         << at[1] / kDx << ") dx";
-  }
+// KNOWN DEFECT (examples/drucker_prager/plate_hole.md, "Finding"): with the band at the band decks' Hourglass
+// Coefficient 0.25 the same plate has a growing mode, largest on the hole's diagonal staircase: largest
+// Re / |lambda|max +0.0175, at (-4, 5) dx (on a 27 x 27 plate with a hole of 8 dx: +1.8e-4). In the plate runs it
+// shows as a point-to-point oscillation of the stress along the staircase that grows with the hole's resolution
+// (R = 16 dx: sigma_xx from -41 to +24 kPa where the plain model has -0.6 kPa; smooth at 0.5 and 1.0). A plain
+// rectangle with the band is stable at 0.25 (the test above; 21 x 21: -1.4e-3 clamped). Enable when fixed.
+TEST(SurfaceBand, DISABLED_LinearisedForceAroundALatticeHoleIsStableWithTheBandDecksHourglass) {
+  double at[2];
+  const double re = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), true, 0.25), true, at);
+  EXPECT_LT(re, -1e-4) << "mode largest at (" << at[0] / kDx << ", " << at[1] / kDx << ") dx";
 }
 
 }  // namespace
