@@ -296,8 +296,8 @@ TEST(SurfaceBand, LinearisedForceIsStableWithTheBandDecksHourglass) {
 
 // The same on a plate with a lattice hole (the staircase of examples/drucker_prager/plate_hole_*; 21 x 21 points, hole
 // of radius 5.5 dx, bottom row clamped, every point within the band). Without the band the linearised force is
-// stable at Hourglass Coefficient 0.25; with the band it is stable from 1.0 (measured largest Re / |lambda|max
-// -1.55e-4 at 1.0, -4.4e-5 at 0.5: not clearly negative).
+// stable at Hourglass Coefficient 0.25 (measured largest Re / |lambda|max -5.4e-4); with the band it is stable at
+// 1.0 (-1.55e-4); the same plate without the hole is stable with the band at 0.25 (-1.4e-3).
 TEST(SurfaceBand, LinearisedForceAroundALatticeHoleIsStableWithoutTheBandAndWithItAtOne) {
   const double off = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), false, 0.25), true);
   const double at1 = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), true, 1.0), true);
@@ -311,7 +311,7 @@ TEST(SurfaceBand, LinearisedForceAroundALatticeHoleIsStableWithoutTheBandAndWith
 
 // KNOWN DEFECT (examples/drucker_prager/plate_hole.md, "Finding"): with the band at the band decks' Hourglass
 // Coefficient 0.25 the same plate has a growing mode, largest on the hole's diagonal staircase: largest
-// Re / |lambda|max +0.0175, at (-4, 5) dx (on a 27 x 27 plate with a hole of 8 dx: +1.8e-4). In the plate runs it
+// Re / |lambda|max +0.0175, at (-4, 5) dx. In the plate runs it
 // shows as a point-to-point oscillation of the stress along the staircase that grows with the hole's resolution
 // (R = 16 dx: sigma_xx from -41 to +24 kPa where the plain model has -0.6 kPa; smooth at 0.5 and 1.0). A plain
 // rectangle with the band is stable at 0.25 (the test above: 21 x 21, -1.4e-3). Enable when fixed.
