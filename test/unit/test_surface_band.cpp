@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -163,20 +164,108 @@ TEST(SurfaceBand, FollowerPressureBalancesTrueHydrostaticStressOnTheDeformedFace
     // Round-off of sums of ~10^2 terms of size p / dx (6e8 Pa/m): 1e-12 of it.
     for (int i = 0; i < L.numQueries; ++i)
       for (int a = 0; a < 3; ++a) EXPECT_NEAR(f[3 * i + a], 0.0, 1e-12 * p / kDx) << "node " << i << " component " << a;
+// A planar lattice of n x n points (spacing kDx, centred on the origin) minus a circular hole of radius r at the
+// origin (points with |x| < r removed, as Rectangle With Holes does), families built as makeLattice builds them.
+pftest::Lattice latticeWithHole(int n, double r) {
+  pftest::Lattice L;
+  L.planar = true, L.dx = kDx, L.horizon = 3.015 * kDx, L.thickness = kDx;
+  const double o = 0.5 * (n - 1);
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = (i - o) * kDx, y = (j - o) * kDx;
+      if (std::hypot(x, y) < r * (1 - 1e-12)) continue;
+      L.x.insert(L.x.end(), {x, y, 0.0});
+      ++L.numNodes;
+    }
+  L.numQueries = L.numNodes;
+  L.volume.assign(L.numNodes, L.nodeVolume());
+  std::vector<double> candidates(L.x);
+  candidates.insert(candidates.end(), {0.0, 0.0, 2.0 * L.horizon + kDx});  // LatticeFixture's planar workaround
+  pf::buildFamilies(candidates, L.numQueries, std::vector<double>(L.numQueries, L.horizon), L.fam);
+  L.fam.numNodes = L.numNodes;
+  L.fam.influence.assign(L.fam.numBonds(), 1.0);
+  L.m.assign(L.numQueries, 0.0);
+  pf::computeWeightedVolume(L.view(), L.m.data());
+  return L;
+}
+
+// The hole of examples/drucker_prager/plate_hole_*: a lattice circle is a staircase. Each point's normal must be the
+// sum of the outward normals of its cell's exposed faces (the faces towards a removed or absent lattice neighbour),
+// so that sum_i n_i dx t is the staircase's closed-surface integral of N dA: zero around the hole, and the traction
+// term -P n / dx of a uniform stress balances over it. Checked for holes of radius 4 dx and 2 dx (points on the
+// circle: the plate decks at dx = 1.25 and 2.5 mm) and 5.5 dx and 2.5 dx (none on it): the normal at every point
+// against the face count, the hole's normals pointing into the hole (n . (c - x) > 0), and their sum zero; and the
+// difference form's exactness for a linear Piola stress on the hole's truncated families.
+TEST(SurfaceBand, OuterNormalsAroundALatticeHoleAreTheStaircasesFaceNormals) {
+  for (double r : {4.0, 5.5, 2.0, 2.5}) {
+    SCOPED_TRACE("hole radius " + std::to_string(r) + " dx");
+    const int n = 25;
+    const pftest::Lattice L = latticeWithHole(n, r * kDx);
+    const Band b = outerLayer(L);
+    const double o = 0.5 * (n - 1);
+    auto present = [&](double x, double y) {  // a lattice point of the plate
+      const double i = x / kDx + o, j = y / kDx + o;
+      return i > -0.5 && i < n - 0.5 && j > -0.5 && j < n - 0.5 && std::hypot(x, y) >= r * kDx * (1 - 1e-12);
+    };
+    double sum[2] = {0, 0};
+    int holeLayer = 0;
+    for (int p = 0; p < L.numNodes; ++p) {
+      const double x = L.x[3 * p], y = L.x[3 * p + 1];
+      const double ex = (present(x + kDx, y) ? 0 : 1) - (present(x - kDx, y) ? 0 : 1);
+      const double ey = (present(x, y + kDx) ? 0 : 1) - (present(x, y - kDx) ? 0 : 1);
+      EXPECT_EQ(b.normal[3 * p], ex) << "x " << x / kDx << " dx, y " << y / kDx << " dx";
+      EXPECT_EQ(b.normal[3 * p + 1], ey) << "x " << x / kDx << " dx, y " << y / kDx << " dx";
+      EXPECT_NEAR(b.thickness[p], kDx, 1e-15);
+      if (std::hypot(x, y) > (r + 2) * kDx || (ex == 0 && ey == 0)) continue;  // the hole's layer only
+      ++holeLayer;
+      sum[0] += ex, sum[1] += ey;
+      EXPECT_GT(-(ex * x + ey * y), 0.0) << "normal not into the hole at x " << x / kDx << ", y " << y / kDx;
+    }
+    EXPECT_GE(holeLayer, 4);
+    EXPECT_EQ(sum[0], 0.0);
+    EXPECT_EQ(sum[1], 0.0);
+    // The difference form stays exact for a linear Piola stress on the staircase's truncated families too:
+    // f_i = div P - P(x_i) n_i / dx at every point (the square plate's test above, here with the hole).
+    const double P0[9] = {-3e5, 2e4, 0, 2e4, -1e5, 0, 0, 0, 0};
+    double G[9][3] = {};  // Pa/m
+    G[0][0] = 4e7, G[0][1] = -1e7, G[1][1] = 3e7, G[3][0] = 2e7, G[4][1] = -5e7, G[4][0] = 1e7;
+    const std::vector<double> rows = linearPiolaRows(L, P0, G);
+    Band bb = b;
+    pf::FamilyView v = L.view();
+    v.band = bb.flags.data(), v.outerNormal = bb.normal.data(), v.layerThickness = bb.thickness.data();
+    std::vector<double> f(L.x.size(), 0.0);
+    for (int i = 0; i < L.numQueries; ++i)
+      pf::addBandForce(v, i, L.x.data(), pf::shapeAndGradient(v, i, L.x.data(), true).Kinv, rows.data(),
+                       pf::kBandRow, f.data());
+    for (int i = 0; i < L.numQueries; ++i)
+      for (int a = 0; a < 2; ++a) {
+        double expect = 0;
+        for (int c = 0; c < 3; ++c) {
+          expect += G[3 * a + c][c];
+          double Pac = P0[3 * a + c];
+          for (int d = 0; d < 3; ++d) Pac += G[3 * a + c][d] * L.x[3 * i + d];
+          expect -= Pac * bb.normal[3 * i + c] / kDx;
+        }
+        EXPECT_NEAR(f[3 * i + a], expect, 1e-9 * 3e5 / kDx) << "node " << i << " component " << a;
+      }
   }
 }
 
 // The force of an Elastic Correspondence plate (plane strain, 9 x 9 points, delta = 3.015 dx: every point lies
 // in the band) in the two-phase form, with or without the band.
 struct Plate {
-  pftest::Lattice L = pftest::makeLattice(9, true, 5e-3, 3.015, 5e-3, pf::Influence(pf::Influence::One), false);
+  pftest::Lattice L;
   std::unique_ptr<pf::Material> mat;
-  Band b = outerLayer(L);
+  Band b;
   bool band;
-  Plate(bool withBand, double hourglass) : band(withBand) {
+  Plate(bool withBand, double hourglass)
+      : Plate(pftest::makeLattice(9, true, 5e-3, 3.015, 5e-3, pf::Influence(pf::Influence::One), false), withBand,
+              hourglass) {}
+  Plate(pftest::Lattice lattice, bool withBand, double hourglass)
+      : L(std::move(lattice)), b(outerLayer(L)), band(withBand) {
     mat = pf::makeMaterial("Elastic Correspondence",
                            {{"Density", 2000.0}, {"Young's Modulus", 30e6}, {"Poisson's Ratio", 0.25},
-                            {"Hourglass Coefficient", hourglass}, {"Plane Strain", 1}, {"Thickness", 5e-3}});
+                            {"Hourglass Coefficient", hourglass}, {"Plane Strain", 1}, {"Thickness", L.thickness}});
     std::vector<double> flag(L.numNodes), once(L.numNodes);
     for (int p = 0; p < L.numNodes; ++p) flag[p] = b.normal[3 * p] != 0 || b.normal[3 * p + 1] != 0;
     pf::spreadOneHorizon(L.view(), flag.data(), once.data());
@@ -199,17 +288,19 @@ struct Plate {
 // Largest real part of the eigenvalues of df/du over the in-plane dofs, relative to the largest eigenvalue
 // magnitude (central differences at the reference state). held: the bottom row's dofs are removed (a clamped
 // edge), else the biaxial test's supports (top and bottom y, one bottom point's x).
-double largestRealPart(const Plate& plate, bool clamped) {
+double largestRealPart(const Plate& plate, bool clamped, double* where = nullptr) {
   const pftest::Lattice& L = plate.L;
   std::vector<int> dofs;
-  const double e = 4 * L.dx - 1e-9;
+  double ymin = HUGE_VAL, ymax = -HUGE_VAL;
+  for (int p = 0; p < L.numNodes; ++p) ymin = std::min(ymin, L.x[3 * p + 1]), ymax = std::max(ymax, L.x[3 * p + 1]);
+  const double half = 0.5 * L.dx;
   for (int p = 0; p < L.numNodes; ++p) {
     const double x = L.x[3 * p], y = L.x[3 * p + 1];
     if (clamped) {
-      if (y > -e) dofs.push_back(3 * p), dofs.push_back(3 * p + 1);
+      if (y > ymin + half) dofs.push_back(3 * p), dofs.push_back(3 * p + 1);
     } else {
-      if (!(y < -e && std::fabs(x) < 1e-9)) dofs.push_back(3 * p);
-      if (std::fabs(y) < e) dofs.push_back(3 * p + 1);
+      if (!(y < ymin + half && std::fabs(x) < 1e-9)) dofs.push_back(3 * p);
+      if (y > ymin + half && y < ymax - half) dofs.push_back(3 * p + 1);
     }
   }
   const int n = static_cast<int>(dofs.size());
@@ -221,9 +312,20 @@ double largestRealPart(const Plate& plate, bool clamped) {
     const std::vector<double> fp = plate.force(yp), fm = plate.force(ym);
     for (int r = 0; r < n; ++r) J(r, c) = (fp[dofs[r]] - fm[dofs[r]]) / (2 * h);
   }
-  const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, where != nullptr);
+  const Eigen::VectorXcd ev = es.eigenvalues();
   double re = -HUGE_VAL, mag = 0;
-  for (int k = 0; k < n; ++k) re = std::max(re, ev[k].real()), mag = std::max(mag, std::abs(ev[k]));
+  int top = 0;
+  for (int k = 0; k < n; ++k) {
+    if (ev[k].real() > re) top = k;
+    re = std::max(re, ev[k].real()), mag = std::max(mag, std::abs(ev[k]));
+  }
+  if (where) {  // the point where the growing mode's amplitude is largest
+    const Eigen::VectorXcd v = es.eigenvectors().col(top);
+    int r = 0;
+    for (int k = 0; k < n; ++k) if (std::abs(v[k]) > std::abs(v[r])) r = k;
+    for (int d = 0; d < 2; ++d) where[d] = L.x[dofs[r] - dofs[r] % 3 + d];
+  }
   return re / mag;
 }
 
@@ -240,6 +342,33 @@ TEST(SurfaceBand, LinearisedForceIsStableWithTheBandDecksHourglass) {
   }
   std::printf("band at Hourglass Coefficient 0.05: largest Re / |lambda|max %.3g (a growing mode)\n",
               largestRealPart(Plate(true, 0.05), false));
+}
+
+// The same on a plate with a lattice hole (the staircase of examples/drucker_prager/plate_hole_*; 21 x 21 points, hole
+// of radius 5.5 dx, bottom row clamped, every point within the band). Without the band the linearised force is
+// stable at Hourglass Coefficient 0.25 (measured largest Re / |lambda|max -5.4e-4); with the band it is stable at
+// 1.0 (-1.55e-4); the same plate without the hole is stable with the band at 0.25 (-1.4e-3).
+TEST(SurfaceBand, LinearisedForceAroundALatticeHoleIsStableWithoutTheBandAndWithItAtOne) {
+  const double off = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), false, 0.25), true);
+  const double at1 = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), true, 1.0), true);
+  // and the same plate without the hole, with the band at 0.25: stable (the staircase is what brings the mode)
+  const double plain = largestRealPart(Plate(latticeWithHole(21, 0.0), true, 0.25), true);
+  std::printf("hole 5.5 dx: no band at 0.25 %.3g, band at 1.0 %.3g; no hole, band at 0.25 %.3g\n", off, at1, plain);
+  EXPECT_LT(off, -1e-4);
+  EXPECT_LT(at1, -1e-4);
+  EXPECT_LT(plain, -1e-4);
+}
+
+// KNOWN DEFECT (examples/drucker_prager/plate_hole.md, "Finding"): with the band at the band decks' Hourglass
+// Coefficient 0.25 the same plate has a growing mode, largest on the hole's diagonal staircase: largest
+// Re / |lambda|max +0.0175, at (-4, 5) dx. In the plate runs it
+// shows as a point-to-point oscillation of the stress along the staircase that grows with the hole's resolution
+// (R = 16 dx: sigma_xx from -41 to +24 kPa where the plain model has -0.6 kPa; smooth at 0.5 and 1.0). A plain
+// rectangle with the band is stable at 0.25 (the test above: 21 x 21, -1.4e-3). Enable when fixed.
+TEST(SurfaceBand, DISABLED_LinearisedForceAroundALatticeHoleIsStableWithTheBandDecksHourglass) {
+  double at[2];
+  const double re = largestRealPart(Plate(latticeWithHole(21, 5.5 * kDx), true, 0.25), true, at);
+  EXPECT_LT(re, -1e-4) << "mode largest at (" << at[0] / kDx << ", " << at[1] / kDx << ") dx";
 }
 
 }  // namespace
