@@ -164,6 +164,9 @@ TEST(SurfaceBand, FollowerPressureBalancesTrueHydrostaticStressOnTheDeformedFace
     // Round-off of sums of ~10^2 terms of size p / dx (6e8 Pa/m): 1e-12 of it.
     for (int i = 0; i < L.numQueries; ++i)
       for (int a = 0; a < 3; ++a) EXPECT_NEAR(f[3 * i + a], 0.0, 1e-12 * p / kDx) << "node " << i << " component " << a;
+  }
+}
+
 // A planar lattice of n x n points (spacing kDx, centred on the origin) minus a circular hole of radius r at the
 // origin (points with |x| < r removed, as Rectangle With Holes does), families built as makeLattice builds them.
 pftest::Lattice latticeWithHole(int n, double r) {
