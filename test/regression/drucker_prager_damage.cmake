@@ -1,0 +1,36 @@
+# Damage by stress (Damage Model = Maximum Principal Stress; Li & Geng, seed 003, Sec. 5.2, Eqs. 49-51;
+# core/StressDamage.hpp) and the four-point bending example (examples/drucker_prager/four_point_bending.md).
+set(DPEX ${PROJECT_SOURCE_DIR}/examples/drucker_prager)
+set(DMG ${REG}/drucker_prager_damage)
+
+# Uniform tension bar (tension_bar.xml: u_x = 1e-5 t x on every point, y and z free, so the exact discrete state is
+# uniaxial, sigma1 = E eps = 0.27 MPa t; f_t = 1 MPa): at t = 1..3 no bond breaks and sigma_xx = E eps within 1e-3
+# (tension_check.py says why), at t = 4 (the first step with E eps > f_t) every bond breaks. np 1 and np 2, and the
+# two runs against each other with Damage compared exactly (the same broken set at every step).
+foreach(np 1 2)
+  periforge_run(drucker_damage_tension_np${np} ${DMG}/tension_bar.xml ${np})
+  periforge_check(drucker_damage_tension_np${np}_check drucker_damage_tension_np${np}
+    ${PY} ${DMG}/tension_check.py ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_np${np}/tension_bar.e)
+endforeach()
+periforge_check(drucker_damage_tension_np1_vs_np2 "drucker_damage_tension_np1;drucker_damage_tension_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_np2/tension_bar.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_np1/tension_bar.e ${DMG}/np_agreement.comp)
+
+# Input errors, one line naming the file and the parameter, non-zero exit, at np 1 and 2 (no rank left waiting):
+# the damage model on an OSB material (no Cauchy stress), and the model without its Tensile Strength (that deck is
+# missing_strength.bad, not .xml: RegressionDecks.Validate parses every .xml under test/regression and expects it to
+# pass the input layer; the reader takes any name not ending in .yaml/.yml as XML).
+foreach(np 1 2)
+  foreach(case wrong_material.xml missing_strength.bad)
+    get_filename_component(stem ${case} NAME_WE)
+    set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_${stem}_np${np})
+    file(MAKE_DIRECTORY ${wd})
+    add_test(NAME drucker_damage_${stem}_np${np}
+             COMMAND ${MPIRUN} -np ${np} ${PERIFORGE_EXE} ${DMG}/${case} WORKING_DIRECTORY ${wd})
+  endforeach()
+  set_tests_properties(drucker_damage_wrong_material_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 60
+    PASS_REGULAR_EXPRESSION "input error: [^ ]*wrong_material.xml: Blocks/Bar: 'Damage Model' = 'Tension Cut-off' \\(Maximum Principal Stress\\): material 'Concrete' \\(Elastic\\) has no Cauchy stress per point")
+  set_tests_properties(drucker_damage_missing_strength_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 60
+    PASS_REGULAR_EXPRESSION "input error: [^ ]*missing_strength.bad: Damage Models/Tension Cut-off: [^\n]*'Tensile Strength'")
+endforeach()
