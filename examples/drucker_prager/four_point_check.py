@@ -12,7 +12,8 @@ usage:
       Exit 1 if the curvature misses by more than --curvature-bound or the deflection by more than
       --deflection-bound (each only when given). The bounds and their reasons are in the ctest file.
   four_point_check.py damage RUN.e RUN.csv [--out CURVE.csv] [--expect-first-crack lower-right]
-      The flawed deck with damage: the load-displacement curve (P = -(R_LoadL + R_LoadR), v = -applied), the peak,
+      The flawed deck with damage: the load-displacement curve (P = -(R_LoadL + R_LoadR), v = -applied; --out writes
+      it as a history-style CSV, columns Applied_Displacement = v and Reaction_Total_Y = P, for scripts/plot_history), the peak,
       the first step with a broken bond and where (the damaged points' centroid, relative to the flaws), the first
       step with damage near the upper flaw. --expect-first-crack lower-right: exit 1 unless the first damage lies
       at the right side of the lower flaw (x > its tip's x - delta, y below mid-depth) and before any damage
@@ -114,11 +115,11 @@ def elastic(a):
 
 def damage(a):
     hist = history(a.csv)
-    if a.out:
+    if a.out:  # scripts/plot_history's units: Applied_Displacement in m (plotted in mm), Reaction_* in N (kN)
         with open(a.out, "w") as f:
-            f.write("time,deflection_um,load_kN\n")
-            for t, v, p in hist:
-                f.write(f"{t:g},{v * 1e6:.6g},{p / 1e3:.6g}\n")
+            f.write("time,step,Applied_Displacement,Reaction_Total_Y\n")
+            for k, (t, v, p) in enumerate(hist):
+                f.write(f"{t:g},{k},{v:.9g},{p:.9g}\n")
     ipk = max(range(len(hist)), key=lambda k: hist[k][2])
     print(f"{a.exo}: {len(hist)} history rows; peak load {hist[ipk][2] / 1e3:.4f} kN at v = {hist[ipk][1] * 1e6:.3f} um "
           f"(t = {hist[ipk][0]:g}); last row v = {hist[-1][1] * 1e6:.3f} um, P = {hist[-1][2] / 1e3:.4f} kN")
@@ -132,10 +133,10 @@ def damage(a):
         dam = [r for r in rows if r["Damage"] > 0]
         if not dam:
             continue
-        # the upper flaw's tip zone: within 1.5 delta of its slot end in x and delta in y (the lower crack, which
-        # runs up from x ~ 118 mm, stays below y ~ 31 mm until the two meet)
-        near_up = [r for r in dam if abs(r["X"] - tip_up[0]) < 1.5 * DELTA and abs(r["Y"] - tip_up[1]) < DELTA]
-        lower = [r for r in dam if tip_lo[0] - DELTA < r["X"] < tip_up[0] + DELTA and r["Y"] < tip_up[1] - DELTA]
+        # the upper flaw's tip zone: within 1.5 delta of its slot end in x, at most delta / 2 below it (the coarse deck
+        # resolves no separate crack there: the first damage in this zone is the lower crack arriving)
+        near_up = [r for r in dam if abs(r["X"] - tip_up[0]) < 1.5 * DELTA and tip_up[1] - 0.5 * DELTA <= r["Y"] < tip_up[1] + DELTA]
+        lower = [r for r in dam if tip_lo[0] - DELTA < r["X"] < tip_up[0] + DELTA and r["Y"] < tip_up[1] - 0.5 * DELTA]
         if first is None:
             cx = sum(r["X"] for r in dam) / len(dam)
             cy = sum(r["Y"] for r in dam) / len(dam)
@@ -149,9 +150,9 @@ def damage(a):
             cx = sum(r["X"] for r in near_up) / len(near_up)
             cy = sum(r["Y"] for r in near_up) / len(near_up)
             top = max((r["Y"] for r in lower), default=float("nan"))
-            print(f"  first damage at the upper flaw's tip (|x - {tip_up[0] * 1e3:g}| < 1.5 delta, |y - {tip_up[1] * 1e3:g}| < "
-                  f"delta) at t = {t:g}: {len(near_up)} points, centroid ({cx * 1e3:.2f}, {cy * 1e3:.2f}) mm; the lower crack's "
-                  f"highest damaged point then at y = {top * 1e3:.2f} mm")
+            print(f"  first damage in the upper flaw's tip zone (|x - {tip_up[0] * 1e3:g}| < 1.5 delta, y >= "
+                  f"{(tip_up[1] - 0.5 * DELTA) * 1e3:g} mm) at t = {t:g}: {len(near_up)} points, centroid ({cx * 1e3:.2f}, "
+                  f"{cy * 1e3:.2f}) mm; the highest damaged point below it then at y = {top * 1e3:.2f} mm")
         if step == n or step % 10 == 1:
             hi = max(dam, key=lambda r: r["Y"])
             print(f"  t = {t:g}: {len(dam)} damaged points, {sum(1 for r in dam if r['Damage'] >= 0.5)} with Damage >= 0.5, "
