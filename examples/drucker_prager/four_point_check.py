@@ -17,7 +17,9 @@ usage:
       the first step with a broken bond and where (the damaged points' centroid, relative to the flaws), the first
       step with damage near the upper flaw. --expect-first-crack lower-right: exit 1 unless the first damage lies
       at the right side of the lower flaw (x > its tip's x - delta, y below mid-depth) and before any damage
-      near the upper flaw.
+      near the upper flaw. --expect KEY=VALUE:RELTOL (repeatable): exit 1 unless the measured peak_load [N], peak_v [m],
+      stiffness [N/m] (P/v of the first step) or first_damage_t is within RELTOL of VALUE (regression guards on the
+      numbers four_point_bending.md reports).
 """
 import argparse
 import csv
@@ -121,10 +123,12 @@ def damage(a):
             for k, (t, v, p) in enumerate(hist):
                 f.write(f"{t:g},{k},{v:.9g},{p:.9g}\n")
     ipk = max(range(len(hist)), key=lambda k: hist[k][2])
+    measured = {"peak_load": hist[ipk][2], "peak_v": hist[ipk][1]}
     print(f"{a.exo}: {len(hist)} history rows; peak load {hist[ipk][2] / 1e3:.4f} kN at v = {hist[ipk][1] * 1e6:.3f} um "
           f"(t = {hist[ipk][0]:g}); last row v = {hist[-1][1] * 1e6:.3f} um, P = {hist[-1][2] / 1e3:.4f} kN")
     k0 = next((k for k in range(len(hist)) if hist[k][1] > 0), 1)
     print(f"  initial stiffness P/v = {hist[k0][2] / hist[k0][1] / 1e6:.4f} N/um (t = {hist[k0][0]:g})")
+    measured["stiffness"] = hist[k0][2] / hist[k0][1]
     tip_lo, tip_up = g.LOWER[1], g.UPPER[1]
     first, first_upper = None, None
     n = nsteps(a.exo)
@@ -142,6 +146,7 @@ def damage(a):
             cy = sum(r["Y"] for r in dam) / len(dam)
             top = max(dam, key=lambda r: r["Y"])
             first = (t, len(dam), cx, cy)
+            measured["first_damage_t"] = t
             print(f"  first damage at t = {t:g} (v = {g.V_RATE * t * 1e6:g} um): {len(dam)} points, centroid "
                   f"({cx * 1e3:.2f}, {cy * 1e3:.2f}) mm; lower flaw tip ({tip_lo[0] * 1e3:g}, {tip_lo[1] * 1e3:g}) mm, "
                   f"upper flaw tip ({tip_up[0] * 1e3:g}, {tip_up[1] * 1e3:g}) mm")
@@ -157,6 +162,16 @@ def damage(a):
             hi = max(dam, key=lambda r: r["Y"])
             print(f"  t = {t:g}: {len(dam)} damaged points, {sum(1 for r in dam if r['Damage'] >= 0.5)} with Damage >= 0.5, "
                   f"highest damaged point y = {hi['Y'] * 1e3:.2f} mm at x = {hi['X'] * 1e3:.2f} mm")
+    bad = 0
+    for e in a.expect or []:  # KEY=VALUE:RELTOL, a regression guard on a number the README reports
+        key, rest = e.split("=")
+        value, tol = map(float, rest.split(":"))
+        got = measured.get(key, float("nan"))
+        ok = abs(got - value) <= tol * abs(value)
+        print(f"  {key}: {got:.6g} against {value:g} +- {100 * tol:g} %: {'ok' if ok else 'FAIL'}")
+        bad += not ok
+    if bad:
+        return 1
     if a.expect_first_crack == "lower-right":
         ok = first is not None and first[2] > tip_lo[0] - DELTA and first[3] < g.H / 2 and \
             (first_upper is None or first_upper > first[0])
@@ -177,5 +192,7 @@ if __name__ == "__main__":
     ap.add_argument("--deflection-bound", type=float)
     ap.add_argument("--out")
     ap.add_argument("--expect-first-crack", choices=["lower-right"])
+    ap.add_argument("--expect", action="append",
+                    help="KEY=VALUE:RELTOL (damage mode; keys peak_load [N], peak_v [m], stiffness [N/m], first_damage_t)")
     a = ap.parse_args()
     sys.exit(elastic(a) if a.mode == "elastic" else damage(a))

@@ -77,7 +77,7 @@ TEST(StressDamage, BondRuleIsEq50AndNeverHeals) {
 
 // Elastic Correspondence on a whole 3D lattice in gather form with Maximum Principal Stress damage.
 struct DamagedRun {
-  std::vector<double> broken, damage, force;
+  std::vector<double> broken, damage, force, rows;
 };
 
 DamagedRun evaluate(const pf::Material& mat, const pftest::Lattice& L, const std::vector<double>& y, double ft,
@@ -98,6 +98,7 @@ DamagedRun evaluate(const pf::Material& mat, const pftest::Lattice& L, const std
   v.tensileStrength = ft;
   mat.computeForce(v, y.data(), st, r.force.data());
   mat.completeForce(v, y.data(), st, r.force.data());
+  r.rows = rows;
   return r;
 }
 
@@ -185,6 +186,44 @@ TEST(StressDamage, HalfBondsAgreeAndBrokenBondsLeaveTheForce) {
   double diff2 = 0.0;
   for (std::size_t k = 0; k < r.force.size(); ++k) diff2 = std::max(diff2, std::fabs(r.force[k] - next.force[k]));
   EXPECT_GT(diff2, 0.0);
+}
+
+// A point whose intact bonds leave K singular is detached: no stress and no force from it, sigma1 = +inf in its row
+// so that its remaining bonds break at the next decision (and only then: frozen rounds keep the base set).
+TEST(StressDamage, PointWithoutRegularShapeTensorIsDetached) {
+  auto mat = pf::makeMaterial("Elastic Correspondence", {{"Density", 2400.0}, {"Young's Modulus", 27e9},
+                                                          {"Poisson's Ratio", 0.18}, {"Hourglass Coefficient", 0.1}});
+  const pftest::Lattice L = pftest::makeLattice(5, false, 1e-3, 3.0, 1e-3, pf::Influence(pf::Influence::One), false);
+  std::vector<double> y(L.x);
+  for (int p = 0; p < L.numNodes; ++p) y[3 * p] += 1e-4 * L.x[3 * p] + 0.02 * L.x[3 * p + 1] * L.x[3 * p + 1];
+  // Node 0 keeps only its bonds along x (collinear: K singular); every other bond stays intact.
+  std::vector<double> brokenN(L.fam.numBonds(), 0.0);
+  const int i0 = 0;
+  for (int b = L.fam.offsets[i0]; b < L.fam.offsets[i0 + 1]; ++b) {
+    const int j = L.fam.neighbors[b];
+    const bool alongX = L.x[3 * j + 1] == L.x[1] && L.x[3 * j + 2] == L.x[2];
+    if (alongX) continue;
+    brokenN[b] = 1.0;
+    for (int c = L.fam.offsets[j]; c < L.fam.offsets[j + 1]; ++c)
+      if (L.fam.neighbors[c] == i0) brokenN[c] = 1.0;  // its other half
+  }
+  const DamagedRun frozen = evaluate(*mat, L, y, HUGE_VAL, brokenN);
+  EXPECT_EQ(frozen.broken, brokenN);  // nothing new while frozen
+  const DamagedRun open = evaluate(*mat, L, y, 1e30, brokenN);  // f_t far above any finite sigma1
+  int along = 0;
+  for (int b = L.fam.offsets[i0]; b < L.fam.offsets[i0 + 1]; ++b) {
+    EXPECT_EQ(open.broken[b], 1.0);  // sigma1_0 = +inf breaks its remaining bonds
+    along += brokenN[b] == 0.0;
+  }
+  ASSERT_GT(along, 0);
+  EXPECT_EQ(open.damage[i0], 1.0);
+  // Its row: no stress (A = P K^-1 = 0), no hourglass constant, sigma1 = +inf; its neighbours' rows are regular.
+  const double* row = &frozen.rows[0];
+  for (int k = 0; k < 9; ++k) EXPECT_EQ(row[pf::kRowA + k], 0.0);
+  EXPECT_EQ(row[pf::kRowC], 0.0);
+  EXPECT_EQ(row[pf::kRowS1], HUGE_VAL);
+  EXPECT_TRUE(std::isfinite(frozen.rows[static_cast<std::size_t>(pf::kGatherRow) * L.fam.neighbors[L.fam.offsets[i0]] +
+                                       pf::kRowS1]));
 }
 
 }  // namespace
