@@ -17,6 +17,21 @@ periforge_check(drucker_damage_tension_np1_vs_np2 "drucker_damage_tension_np1;dr
   ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_np2/tension_bar.e
   ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_np1/tension_bar.e ${DMG}/np_agreement.comp)
 
+# The same bar with the NDO band (tension_bar_band.xml; np 1 and 2, and np 2 against np 1 as above) and with Drucker
+# Prager Correspondence kept elastic by a 1 GPa cohesion (tension_bar_dp.xml; np 1): the same closed form.
+foreach(np 1 2)
+  periforge_run(drucker_damage_tension_band_np${np} ${DMG}/tension_bar_band.xml ${np})
+  periforge_check(drucker_damage_tension_band_np${np}_check drucker_damage_tension_band_np${np}
+    ${PY} ${DMG}/tension_check.py ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_band_np${np}/tension_bar.e)
+endforeach()
+periforge_check(drucker_damage_tension_band_np1_vs_np2 "drucker_damage_tension_band_np1;drucker_damage_tension_band_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_band_np2/tension_bar.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_band_np1/tension_bar.e ${DMG}/np_agreement.comp)
+periforge_run(drucker_damage_tension_dp_np1 ${DMG}/tension_bar_dp.xml 1)
+periforge_check(drucker_damage_tension_dp_np1_check drucker_damage_tension_dp_np1
+  ${PY} ${DMG}/tension_check.py ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_dp_np1/tension_bar.e)
+
 # Input errors, one line naming the file and the parameter, non-zero exit, at np 1 and 2 (no rank left waiting):
 # the damage model on an OSB material (no Cauchy stress), and the model without its Tensile Strength (that deck is
 # missing_strength.bad, not .xml: RegressionDecks.Validate parses every .xml under test/regression and expects it to
