@@ -32,6 +32,20 @@ periforge_run(drucker_damage_tension_dp_np1 ${DMG}/tension_bar_dp.xml 1)
 periforge_check(drucker_damage_tension_dp_np1_check drucker_damage_tension_dp_np1
   ${PY} ${DMG}/tension_check.py ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_dp_np1/tension_bar.e)
 
+# Explicit dynamics (tension_bar_verlet.xml: Verlet, each evaluation breaks from its own stress, no break rounds; the
+# deck says why the stress bound is 3 %): no break in any frame with E eps < f_t, every bond broken in the first frame
+# past it (f_t lies half-way between two frames), np 1 and np 2 and the two against each other (np_agreement.comp).
+foreach(np 1 2)
+  periforge_run(drucker_damage_tension_verlet_np${np} ${DMG}/tension_bar_verlet.xml ${np})
+  periforge_check(drucker_damage_tension_verlet_np${np}_check drucker_damage_tension_verlet_np${np}
+    ${PY} ${DMG}/tension_check.py ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_verlet_np${np}/tension_bar.e
+    --rate 0.968 --stress-bound 0.03)
+endforeach()
+periforge_check(drucker_damage_tension_verlet_np1_vs_np2 "drucker_damage_tension_verlet_np1;drucker_damage_tension_verlet_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_verlet_np2/tension_bar.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/drucker_damage_tension_verlet_np1/tension_bar.e ${DMG}/np_agreement.comp)
+
 # Input errors, one line naming the file and the parameter, non-zero exit, at np 1 and 2 (no rank left waiting):
 # the damage model on an OSB material (no Cauchy stress), and the model without its Tensile Strength (that deck is
 # missing_strength.bad, not .xml: RegressionDecks.Validate parses every .xml under test/regression and expects it to
