@@ -150,8 +150,8 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   std::vector<Mat3> Kinv(n), F(n), R(n), tauN(n), de(n), tau(n);
   std::vector<double> Jn(dissipatedWanted_ ? n : 0);
   // Stress damage (core/StressDamage.hpp): K and F leave out the bonds broken in fam.brokenN (omega' = 0). A point
-  // whose intact bonds no longer span the space (singular K) is detached: no stress, no force, no hourglass, and
-  // sigma1 = +inf in its row so that its remaining bonds break at the next decision.
+  // whose intact bonds no longer span the space (singular K) is detached: no stress and no hourglass term of its own,
+  // and sigma1 = +inf in its row so that its remaining bonds break at the next decision.
   const bool stressDamage = fam.brokenN && fam.tensileStrength > 0.0;
   std::vector<char> detached(stressDamage ? n : 0, 0);
   // Phase 1: kinematics of every owned node, from its own family.
@@ -193,11 +193,11 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
       std::copy(F[k].begin(), F[k].end(), row + kRowF);
       row[kRowC] = stressDamage && detached[k] ? 0.0 : c;
       row[kRowFlag] = 1.0;
-      if (stressDamage) {
-        double t6[6];
-        toSym6(tau[k], t6);
-        row[kRowS1] = detached[k] ? HUGE_VAL : maxPrincipal(t6);
-      }
+      // sigma1 always (a few flops per point): a damaged block's bond to a point of an undamaged correspondence block
+      // then sees that point's true sigma1 (a one-pass model's zero row gives 0).
+      double t6[6];
+      toSym6(tau[k], t6);
+      row[kRowS1] = stressDamage && detached[k] ? HUGE_VAL : maxPrincipal(t6);
       if (fam.band) {
         std::copy(P.begin(), P.end(), row + kRowP);
         std::copy(Kinv[k].begin(), Kinv[k].end(), row + kRowKinv);
