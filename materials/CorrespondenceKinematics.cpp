@@ -226,12 +226,20 @@ void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kin
       f[a] += (w * t + (magi + magj) * Y[a]) * vj;
     }
   }
-  // Eq. 31's traction term without T_ext (a Pressure condition adds T_ext / dx as its body force): -P_i n / dx.
+  // Eq. 31's traction term -P_i n / dx; T_ext / dx comes from a Pressure condition: a dead load as its body
+  // force, a follower one here, J F^-T times the reference traction (Nanson: the deformed area vector).
   const double* n = fam.outerNormal + 3 * i;
   const double h = fam.layerThickness[i];
   if (h > 0.0)
     for (int a = 0; a < 3; ++a)
       for (int c = 0; c < 3; ++c) f[a] -= Pi[3 * a + c] * n[c] / h;
+  if (fam.followerLoad) {
+    const double* q = fam.followerLoad + 3 * i;
+    if (q[0] != 0.0 || q[1] != 0.0 || q[2] != 0.0) {
+      const Mat3 cof = cofactor(ri + kRowF);
+      for (int a = 0; a < 3; ++a) f[a] += cof[3 * a] * q[0] + cof[3 * a + 1] * q[1] + cof[3 * a + 2] * q[2];
+    }
+  }
   for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
 }
 

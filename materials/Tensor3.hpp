@@ -48,6 +48,12 @@ inline double ddot(const Mat3& a, const Mat3& b) {
 inline double det(const Mat3& a) {
   return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
 }
+// cof(a) = det(a) a^-T, defined for a singular a too (row-major a of 9 values).
+inline Mat3 cofactor(const double* a) {
+  return {a[4] * a[8] - a[5] * a[7], a[5] * a[6] - a[3] * a[8], a[3] * a[7] - a[4] * a[6],
+          a[2] * a[7] - a[1] * a[8], a[0] * a[8] - a[2] * a[6], a[1] * a[6] - a[0] * a[7],
+          a[1] * a[5] - a[2] * a[4], a[2] * a[3] - a[0] * a[5], a[0] * a[4] - a[1] * a[3]};
+}
 // inv = a^-1 and returns det(a); leaves inv unset when det(a) == 0.
 inline double inverse(const Mat3& a, Mat3& inv) {
   const double d = det(a);

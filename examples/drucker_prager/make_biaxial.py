@@ -56,6 +56,9 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200, restart=0
     # has a growing mode below Hourglass Coefficient 0.2 (test_surface_band, LinearisedForceIsStable; the
     # paper's Eq. 21 term is about 0.2 in this convention). Affine states, like this test's, feel none of it.
     HOURGLASS = 0.25 if band else 0.05
+    # With the band the confinement is a follower load (Pressure 'Follower'): a true 600 kPa on the deformed faces,
+    # the load the paper's analytic 232.6 kPa assumes (a dead load ends at -P / F_yy = -640.7 kPa, README).
+    FOLLOWER = '\n      <Parameter name="Follower" type="bool" value="true"/>' if band else ""
     BAND_PARAM = ('\n      <Parameter name="Surface Correction" type="string" value="NDO Band"/>' if band else "")
     W, H = nx * dx, ny * dx
     L = (ny - 1) * dx                                    # top row to bottom row
@@ -118,7 +121,7 @@ def deck(name, dx, nx, ny, tol, P=600e3, test=2, lbc=False, t_end=200, restart=0
 {face("Left", "Min X")}{face("Right", "Max X")}{face("Top", "Max Y")}{face("Bottom", "Min Y")}    <ParameterList name="Bottom Middle"><Parameter name="Type" type="string" value="Node Set Region"/>
       <Parameter name="X Min" type="double" value="{cx - dx / 4:.10g}"/><Parameter name="X Max" type="double" value="{cx + dx / 4:.10g}"/>
       <Parameter name="Y Max" type="double" value="{dx:.10g}"/></ParameterList>
-{bc("Confine Left", "Pressure", "Left", val(pres))}{bc("Confine Right", "Pressure", "Right", val(pres))}{bc("Bottom Y", "Prescribed Displacement", "Bottom", coord("y", "0.0"))}{bc("Bottom Middle X", "Prescribed Displacement", "Bottom Middle", coord("x", "0.0"))}{bc("Top Y", "Prescribed Displacement", "Top", coord("y", top))}  </ParameterList>
+{bc("Confine Left", "Pressure", "Left", val(pres) + FOLLOWER)}{bc("Confine Right", "Pressure", "Right", val(pres) + FOLLOWER)}{bc("Bottom Y", "Prescribed Displacement", "Bottom", coord("y", "0.0"))}{bc("Bottom Middle X", "Prescribed Displacement", "Bottom Middle", coord("x", "0.0"))}{bc("Top Y", "Prescribed Displacement", "Top", coord("y", top))}  </ParameterList>
   <ParameterList name="Solver">
     <Parameter name="Initial Time" type="double" value="0.0"/>
     <Parameter name="Final Time" type="double" value="{t_end:.1f}"/>

@@ -106,6 +106,19 @@ void printDone(const OutputFanout& output, Clock::time_point start) {
               files.empty() ? "nothing (no Output list)" : files.c_str());
 }
 
+// Collective. What each rank owns and receives per exchange (scripts/comm_model predicts the same from the
+// partition's geometry): owned and ghost points per rank, and the ranks a rank receives ghosts from.
+void reportPartition(const DistributedLayout& layout) {
+  const double owned = layout.numOwned(), ghosts = layout.numGhosts(), sources = layout.numGhostSources();
+  const double ownedMax = layout.max(owned), ownedMin = -layout.max(-owned);
+  const double ghostMax = layout.max(ghosts), ghostMin = -layout.max(-ghosts), ghostSum = layout.sum(ghosts);
+  const double sourcesMax = layout.max(sources);
+  if (layout.rank() == 0)
+    std::printf("partition: owned points per rank %.0f..%.0f, ghost points per rank %.0f..%.0f (total %.0f), "
+                "ranks a rank receives from: at most %.0f\n",
+                ownedMin, ownedMax, ghostMin, ghostMax, ghostSum, sourcesMax);
+}
+
 // Throws on failure, after marking every output list's files as failed or interrupted.
 void run(const std::string& inputFile, const std::string& restartFile, const Communicator& comm,
          Clock::time_point start) {
@@ -120,6 +133,7 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
   if (comm.rank() == 0)
     std::printf("periforge: %s: %d points, %.0f bonds, %d rank(s), set-up %.2f s, solver %s\n", inputFile.c_str(),
                 model.layout().numGlobal(), bonds, comm.size(), setup, solvers.front()->name().c_str());
+  if (comm.size() > 1) reportPartition(model.layout());
   // Checks that need the model come before any output file is opened.
   std::vector<double> u(model.numDofs(), 0.0), v(model.numDofs(), 0.0);
   initialState(problem, deck.solvers.front().times.front(), u, v);

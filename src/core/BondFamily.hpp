@@ -68,6 +68,10 @@ struct FamilyView {
   const double* band = nullptr;
   const double* outerNormal = nullptr;
   const double* layerThickness = nullptr;
+  // A follower Pressure on the band's outer layer (Model::addFollowerPressure), null without one: per owned node,
+  // q = p d / h (3 values; 0 off the loaded set), the reference traction over the layer thickness. The band adds
+  // cof(F_i) q = J F^-T q (Li & Geng Eq. 31's T_ext / dx on the deformed surface).
+  const double* followerLoad = nullptr;
   // The two-phase evaluation's buffer (Material::exchangeWidth), exchangeStride values per overlap node:
   // computeForce writes its owned nodes' rows, the core imports them to the ghosts before completeForce
   // reads any row. Null: one-pass evaluation.

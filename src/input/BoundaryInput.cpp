@@ -81,7 +81,11 @@ std::vector<ParameterSpec> conditionSpecs() {
                              "pressure [Pa], positive pushing on the body").need(),
           S::real("Layer Thickness", "`Pressure` only: thickness of the surface layer the node set holds; a point of "
                                      "volume V stands for the area V / thickness. Default: the grid spacing")
-              .positive()};
+              .positive(),
+          S::flag("Follower", "`Pressure` only: `true` makes it a follower load, acting on the deformed surface "
+                              "(traction -p J F^-T N per reference area, as a fluid pressure); needs Blocks "
+                              "`Surface Correction` = `NDO Band`. `false`: a dead load on the reference area (-p N)")
+              .byDefault("false")};
 }
 
 std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string>& generated, const std::string& file,
@@ -142,9 +146,11 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
     if (c.kind == K::Pressure) {
       if (v.has("Coordinate")) fail(file, bpath, "'Coordinate' does not apply to a Pressure (it acts along the normal)");
       c.layerThickness = v.get("Layer Thickness", 0.0);
+      c.follower = v.flag("Follower");
     } else {
       if (!v.has("Coordinate")) fail(file, bpath, "missing required parameter 'Coordinate'");
       if (v.has("Layer Thickness")) fail(file, bpath, "'Layer Thickness' applies to a Pressure only");
+      if (v.flag("Follower")) fail(file, bpath, "'Follower' applies to a Pressure only");
       c.coordinate = v.text("Coordinate")[0] - 'x';
     }
     c.nodeSet = v.text("Node Set");

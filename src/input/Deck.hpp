@@ -92,6 +92,7 @@ struct ConditionSpec {
   int coordinate = 0;                 // 0, 1, 2 (not for Pressure)
   std::shared_ptr<const Expression> value;
   double layerThickness = 0.0;        // Pressure: the surface layer's thickness; 0 = the grid spacing
+  bool follower = false;              // Pressure: acts on the deformed surface (needs the NDO band)
 };
 
 // A frictionless rigid plane the points of a node set may not cross (Verlet only; model/RigidWall.hpp).

@@ -111,6 +111,7 @@ void Model::internalForce(const double* u, double* f) {
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
+  updateFollowerLoads();
   // A material that fails on one rank (a return mapping that does not converge there) must fail on every
   // rank before the collective exportAdd, or the others wait in it forever: one allreduce per evaluation.
   collectively(layout_->comm(), [&] {
@@ -157,6 +158,7 @@ FamilyView Model::blockView(const BlockModel& b) const {
     view.band = band_->band.data();
     view.outerNormal = band_->outerNormal.data();
     view.layerThickness = band_->layerThickness.data();
+    if (!followerLoads_.empty()) view.followerLoad = followerQ_.data();
   }
   return view;
 }
@@ -193,6 +195,11 @@ void Model::addPrescribedDisplacement(NodalLoad load) {
 }
 
 void Model::addBodyForce(NodalLoad load) { bodyForces_.push_back(std::move(load)); }
+void Model::addFollowerPressure(NodalLoad load) {
+  followerLoads_.push_back(std::move(load));
+  followerQ_.assign(static_cast<std::size_t>(numDofs()), 0.0);
+  followerTime_ = NAN;
+}
 
 namespace {
 // Evaluates a load's expression at its nodes; an expression without x, y, z is evaluated once.
@@ -238,6 +245,13 @@ void Model::applyPrescribed(double t, double* u) const {
   for (const NodalLoad& l : prescribedLoads_) evaluate(l, x_, t, [u](int k, double v) { u[k] = v; });
 }
 
+void Model::updateFollowerLoads() {
+  if (followerLoads_.empty() || time_ == followerTime_) return;
+  std::fill(followerQ_.begin(), followerQ_.end(), 0.0);
+  for (const NodalLoad& l : followerLoads_) evaluate(l, x_, time_, [this](int k, double v) { followerQ_[k] += v; });
+  followerTime_ = time_;
+}
+
 void Model::bodyForce(double t, double* b) const {
   std::fill(b, b + numDofs(), 0.0);
   for (const NodalLoad& l : bodyForces_) evaluate(l, x_, t, [b](int k, double v) { b[k] += v; });
@@ -246,6 +260,7 @@ void Model::bodyForce(double t, double* b) const {
 void Model::requireFiniteLoads(double t) const {
   for (const NodalLoad& l : prescribedLoads_) requireFiniteLoad(*this, l, t);
   for (const NodalLoad& l : bodyForces_) requireFiniteLoad(*this, l, t);
+  for (const NodalLoad& l : followerLoads_) requireFiniteLoad(*this, l, t);
 }
 
 void requireFiniteLoad(const Model& model, const NodalLoad& load, double t) {

@@ -2,6 +2,7 @@
 // The discrete peridynamic body a solver drives: owned degrees of freedom, internal force density from
 // the blocks' materials, lumped density, stiffness bound, boundary conditions and state commit/rollback.
 // Solvers see only this class (and never which material sits behind it).
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -107,6 +108,10 @@ class Model {
   // Boundary conditions
   void addPrescribedDisplacement(NodalLoad load);
   void addBodyForce(NodalLoad load);
+  // One component of a follower Pressure (model/PressureLoad.hpp): value times factor at time t is that node's
+  // reference traction over the layer thickness, which the NDO band turns with F (FamilyView::followerLoad). Part
+  // of internalForce, not of bodyForce.
+  void addFollowerPressure(NodalLoad load);
   // Sets prescribed components of u at time t, and makes t the time of the following force evaluations
   // (FamilyView::time; the first t of the run is FamilyView::startTime). Every solver imposes the boundary
   // conditions of the time it evaluates, sub-steps included, so rate-dependent materials get the time
@@ -157,7 +162,10 @@ class Model {
   void exchangeAndComplete();                     // the second phase of internalForce
   std::vector<double> yEvaluated_, yCommitted_;  // positions of the last internalForce and of the last commit
   bool wantsPositions() const;
-  std::vector<NodalLoad> prescribedLoads_, bodyForces_;
+  std::vector<NodalLoad> prescribedLoads_, bodyForces_, followerLoads_;
+  std::vector<double> followerQ_;                  // 3 per owned node at followerTime_ (FamilyView::followerLoad)
+  double followerTime_ = NAN;
+  void updateFollowerLoads();
   std::vector<char> prescribed_;
   std::vector<RigidWall> walls_;
   std::vector<double> wallReaction_, mass_;

@@ -122,14 +122,15 @@ void adoptFlatTextMesh(const DiscretizationSpec& spec, PointCloud& cloud, const 
   cloud.planar = true;
 }
 
-// A Pressure condition as body forces on its layer (model/PressureLoad.hpp).
+// A Pressure condition as body forces on its layer, or follower tractions of the band (model/PressureLoad.hpp).
 void addPressure(Model& model, const ConditionSpec& bc, const std::vector<int>& nodes, double spacing,
                  const std::string& inputFile) {
   const std::string context = inputFile + ": Boundary Conditions/" + bc.name;
   const double h = bc.layerThickness > 0 ? bc.layerThickness : spacing;
   if (!(h > 0))
     throw InputError(context + ": 'Layer Thickness' is needed: the discretization has no grid spacing to default to");
-  for (NodalLoad& l : pressureLoads(model, nodes, bc.value, h, context)) model.addBodyForce(std::move(l));
+  for (NodalLoad& l : pressureLoads(model, nodes, bc.value, h, context, bc.follower))
+    bc.follower ? model.addFollowerPressure(std::move(l)) : model.addBodyForce(std::move(l));
 }
 
 // Points without bonds carry no force and make the stiffness singular: one line, with the first of them.

@@ -51,7 +51,7 @@ bool bandDirection(const SurfaceBand& band, int i, const bool flat[3], bool anyF
 
 std::vector<NodalLoad> pressureLoads(const Model& model, const std::vector<int>& nodes,
                                      std::shared_ptr<const Expression> pressure, double layerThickness,
-                                     const std::string& context) {
+                                     const std::string& context, bool follower) {
   std::vector<NodalLoad> loads(3);
   for (int c = 0; c < 3; ++c) {
     loads[c].coordinate = c;
@@ -60,6 +60,9 @@ std::vector<NodalLoad> pressureLoads(const Model& model, const std::vector<int>&
   // With the band: the axes in which the whole set is flat (reference extent below a quarter layer). Collective
   // (every rank has the same band or none).
   const SurfaceBand* band = model.surfaceBand();
+  if (follower && !band)
+    throw InputError(context + ": 'Follower' = true needs the NDO band (Blocks 'Surface Correction' = 'NDO Band'): "
+                               "the deformed area comes from the band's deformation gradient");
   const std::vector<double>& x = model.coordinates();
   bool flat[3] = {false, false, false}, anyFlat = false;
   for (int c = 0; c < 3 && band; ++c) {
@@ -71,7 +74,16 @@ std::vector<NodalLoad> pressureLoads(const Model& model, const std::vector<int>&
   collectively(model.layout().comm(), [&] {
     for (int i : nodes) {
       double d[3];
-      if (!band || !bandDirection(*band, i, flat, anyFlat, d)) inwardDirection(model, i, d, context);
+      const bool onBand = band && bandDirection(*band, i, flat, anyFlat, d);
+      if (follower && !onBand) {
+        const std::vector<double>& xs = model.coordinates();
+        char msg[240];
+        std::snprintf(msg, sizeof msg,
+                      ": 'Follower' = true: point %d (%g, %g, %g) is not on the NDO band's outer layer",
+                      model.layout().gids()[i] + 1, xs[3 * i], xs[3 * i + 1], xs[3 * i + 2]);
+        throw InputError(context + msg);
+      }
+      if (!onBand) inwardDirection(model, i, d, context);
       for (int c = 0; c < 3; ++c) {
         if (d[c] == 0.0) continue;  // a component that is exactly zero costs nothing to skip
         loads[c].nodes.push_back(i);

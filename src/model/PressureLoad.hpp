@@ -12,11 +12,13 @@
 
 namespace pf {
 
-// The pressure's three components as body-force loads with per-node factors d_c / h, for the owned
-// nodes of the set. Collective: every rank throws the same InputError (naming context) if a point of the
-// set has neighbours on all sides (no surface there), or no neighbour at all.
+// The pressure's three components as loads with per-node factors d_c / h, for the owned nodes of the set.
+// Collective: every rank throws the same InputError (naming context) if a point of the set has neighbours on
+// all sides (no surface there), or no neighbour at all, or (follower) is not on a band block's outer layer.
+// follower: the loads are reference tractions the NDO band turns with the point's deformation
+// (Model::addFollowerPressure); otherwise body forces (a dead load on the reference area).
 std::vector<NodalLoad> pressureLoads(const Model& model, const std::vector<int>& nodes,
                                      std::shared_ptr<const Expression> pressure, double layerThickness,
-                                     const std::string& context);
+                                     const std::string& context, bool follower = false);
 
 }  // namespace pf

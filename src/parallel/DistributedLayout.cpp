@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <set>
 #include <numeric>
 #include <stdexcept>
 
@@ -161,6 +162,9 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
   for (int& j : family_.neighbors)
     if (j >= numOwned_) j = ghostIndex[j - numOwned_];
   family_.numNodes = numOverlap();
+  std::set<int> sources;  // the ranks this one receives ghosts from (the messages of an import)
+  for (std::size_t g = owned.size(); g < gids_.size(); ++g) sources.insert(owner[gids_[g]]);
+  numGhostSources_ = static_cast<int>(sources.size());
 
   for (int i = 0; i < numOwned_; ++i) {
     const int b = block[owned[i]];

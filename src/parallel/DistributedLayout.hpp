@@ -34,6 +34,8 @@ class DistributedLayout {
   int numOwned() const { return numOwned_; }
   int numOverlap() const { return static_cast<int>(gids_.size()); }
   int numGlobal() const { return numGlobal_; }
+  int numGhosts() const { return numOverlap() - numOwned_; }
+  int numGhostSources() const { return numGhostSources_; }  // ranks owning this rank's ghosts
   const std::vector<int>& gids() const { return gids_; }      // overlap-local -> cloud index (0-based)
   const std::vector<BlockRange>& blocks() const { return blocks_; }
   const BondFamily& family() const { return family_; }
@@ -56,7 +58,7 @@ class DistributedLayout {
  private:
   void buildTransfers();  // owned, overlap and rank-0 maps with their Import/Export
   Communicator comm_;
-  int numOwned_ = 0, numGlobal_ = 0;
+  int numOwned_ = 0, numGlobal_ = 0, numGhostSources_ = 0;
   std::vector<int> gids_;
   std::vector<BlockRange> blocks_;
   BondFamily family_;

@@ -5,7 +5,8 @@
 //  2. the difference form is exact for a linear first Piola field on every point, boundary and corners
 //     included: sum omega (P_j - P_i) K_i^-1 xi V_j = G K K^-1 = div P (the property that removes the
 //     surface effect), and a uniform P leaves only the traction term -P n / dx;
-//  3. the linearised force of a plate with the band has no eigenvalue with a positive real part at the band
+//  3. a follower pressure balances a true hydrostatic stress on the deformed faces for any F;
+//  4. the linearised force of a plate with the band has no eigenvalue with a positive real part at the band
 //     decks' Hourglass Coefficient (0.25): ADR and explicit dynamics on it are stable. The operator is not
 //     symmetric, so this is not given: at 0.05 (enough without the band) it has a growing mode.
 // Units: SI, dx = 1 mm.
@@ -110,6 +111,58 @@ TEST(SurfaceBand, DifferenceFormIsExactDivergenceOfLinearPiola) {
         // Round-off of K^-1 and of ~10^2 terms of size |G| dx: 1e-9 of the traction scale P / dx (3e8 Pa/m).
         EXPECT_NEAR(f[3 * i + a], expect, 1e-9 * scale) << "node " << i << " component " << a;
       }
+  }
+}
+
+// A follower Pressure (FamilyView::followerLoad) on every face of a body in the uniform true stress sigma = -p I:
+// P = J sigma F^-T = -p cof(F) for any F, and the load on the deformed faces, p cof(F) (-n) / dx, balances the
+// traction term -P n / dx at every outer point, corners included (Nanson's formula), while the difference form
+// of a uniform P is zero: every point's force vanishes. A dead load (the reference traction p (-n) / dx) would
+// leave p (cof(F) - I) n / dx, which this F makes 0.1 to 0.3 of p / dx.
+TEST(SurfaceBand, FollowerPressureBalancesTrueHydrostaticStressOnTheDeformedFaces) {
+  for (bool planar : {true, false}) {
+    SCOPED_TRACE(planar ? "2D" : "3D");
+    const pftest::Lattice L =
+        pftest::makeLattice(planar ? 9 : 6, planar, kDx, planar ? 3.015 : 2.015, kDx, pf::Influence(pf::Influence::One), false);
+    Band b = outerLayer(L);
+    const double F[9] = {1.08, 0.12, planar ? 0.0 : 0.05, -0.04, 0.93, planar ? 0.0 : -0.07,
+                         planar ? 0.0 : 0.03, planar ? 0.0 : 0.06, planar ? 1.0 : 1.11};
+    const double p = 6e5;
+    const pf::Mat3 cof = pf::cofactor(F);
+    std::vector<double> rows(static_cast<std::size_t>(pf::kBandRow) * L.numNodes, 0.0), y(L.x.size());
+    for (int n = 0; n < L.numNodes; ++n) {
+      double* r = &rows[static_cast<std::size_t>(pf::kBandRow) * n];
+      for (int k = 0; k < 9; ++k) r[pf::kRowF + k] = F[k], r[pf::kRowP + k] = -p * cof[k];
+      r[pf::kRowFlag] = 1.0;
+      for (int a = 0; a < 3; ++a)
+        y[3 * n + a] = F[3 * a] * L.x[3 * n] + F[3 * a + 1] * L.x[3 * n + 1] + F[3 * a + 2] * L.x[3 * n + 2];
+    }
+    std::vector<double> q(L.x.size(), 0.0);
+    int loaded = 0;
+    double deadResidual = 0.0;
+    for (int i = 0; i < L.numQueries; ++i) {
+      const double* nv = &b.normal[3 * i];
+      if (nv[0] == 0.0 && nv[1] == 0.0 && nv[2] == 0.0) continue;
+      ++loaded;
+      for (int a = 0; a < 3; ++a) q[3 * i + a] = -p * nv[a] / kDx;
+      for (int a = 0; a < 3; ++a) {
+        double d = 0.0;
+        for (int c = 0; c < 3; ++c) d += (cof[3 * a + c] - (a == c ? 1.0 : 0.0)) * nv[c];
+        deadResidual = std::max(deadResidual, std::fabs(p * d / kDx));
+      }
+    }
+    ASSERT_GT(loaded, 0);
+    EXPECT_GT(deadResidual, 0.1 * p / kDx);
+    pf::FamilyView v = L.view();
+    v.band = b.flags.data(), v.outerNormal = b.normal.data(), v.layerThickness = b.thickness.data();
+    v.followerLoad = q.data();
+    std::vector<double> f(L.x.size(), 0.0);
+    for (int i = 0; i < L.numQueries; ++i)
+      pf::addBandForce(v, i, y.data(), pf::shapeAndGradient(v, i, L.x.data(), planar).Kinv, rows.data(), pf::kBandRow,
+                       f.data());
+    // Round-off of sums of ~10^2 terms of size p / dx (6e8 Pa/m): 1e-12 of it.
+    for (int i = 0; i < L.numQueries; ++i)
+      for (int a = 0; a < 3; ++a) EXPECT_NEAR(f[3 * i + a], 0.0, 1e-12 * p / kDx) << "node " << i << " component " << a;
   }
 }
 

@@ -168,6 +168,17 @@ CASES = [
        '<Parameter name="Node Set" type="string" value="All"/><Parameter name="Value" type="string" value="1.0e6"/></ParameterList>\n'
        '    <ParameterList name="Left X">')],
      ["Boundary Conditions/Push", "is not on a surface"]),
+    ("Follower given for a displacement",
+     [('<ParameterList name="Left X"><Parameter name="Type" type="string" value="Prescribed Displacement"/>',
+       '<ParameterList name="Left X"><Parameter name="Type" type="string" value="Prescribed Displacement"/>'
+       '<Parameter name="Follower" type="bool" value="true"/>')],
+     ["Boundary Conditions/Left X", "'Follower' applies to a Pressure only"]),
+    ("follower Pressure without the NDO band",
+     [('<ParameterList name="Left X">', '<ParameterList name="Push"><Parameter name="Type" type="string" value="Pressure"/>'
+       '<Parameter name="Node Set" type="string" value="Left Layer"/><Parameter name="Value" type="string" value="1.0e6"/>'
+       '<Parameter name="Follower" type="bool" value="true"/></ParameterList>\n'
+       '    <ParameterList name="Left X">')],
+     ["Boundary Conditions/Push", "'Follower' = true needs the NDO band"]),
     # Found by the fuzz test (test/fuzz, docs/verification.md): each ended in a signal, a library's message
     # naming no parameter, a message cut short at a NUL, or a silently truncated run.
     ("bool that is not a bool",
