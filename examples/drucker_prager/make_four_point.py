@@ -23,6 +23,7 @@ Decks written here:
   four_point_bending_coarse_t7.xml  its first 7 load steps (elastic, then the first cracks): the ctest deck
   four_point_elastic_coarse.xml  the coarse deck without flaws and without damage: the elastic check against beam
                                  theory (four_point_check.py)
+  four_point_elastic_fine.xml    the same at dx / 2 (how the beam-theory differences change with the grid)
 usage: make_four_point.py
 """
 import math
@@ -165,6 +166,11 @@ def main():
         "four_point_elastic_coarse": deck("four_point_elastic_coarse", False, False, False, 4, 4, 1e-6,
                                           "Elastic check deck: the coarse deck without flaws and damage."),
     }
+    global DX
+    DX = DX / 2  # the elastic check at half the spacing (not a ctest: 18 s), same beam and loads
+    decks["four_point_elastic_fine"] = deck("four_point_elastic_fine", False, False, False, 4, 4, 1e-6,
+                                            "Elastic check deck at dx / 2 (not a ctest).")
+    DX = DX * 2
     for name, text in decks.items():
         with open(os.path.join(here, name + ".xml"), "w") as f:
             f.write(text)
