@@ -10,8 +10,10 @@
 namespace pf {
 namespace {
 
-// The weight of bond b in every family sum: omega V_j (times the partial-volume fraction).
+// The weight of bond b in every family sum: omega V_j (times the partial-volume fraction); 0 for a bond broken
+// in the committed (or break-round base) set.
 inline double bondWeight(const FamilyView& fam, int b) {
+  if (fam.brokenN && fam.brokenN[b] != 0.0) return 0.0;  // a broken bond: omega' = 0 (Li & Geng Eq. 49)
   const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
   const double v = fam.volume[fam.neighbors[b]];
   return fam.fraction ? w * v * fam.fraction[b] : w * v;
@@ -199,13 +201,14 @@ inline void hourglassBothEnds(const double* Y, const double* xi, const double* F
 }  // namespace
 
 void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
-                  double* force) {
+                  double* force, const double* broken) {
   const double* xi0 = fam.x + 3 * i;
   const double* yi = y + 3 * i;
   const double* ri = rows + static_cast<std::size_t>(stride) * i;
   const double* Pi = ri + kRowP;
   double f[3] = {0.0, 0.0, 0.0};
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    if (broken && broken[b] != 0.0) continue;
     const int j = fam.neighbors[b];
     const double* rj = rows + static_cast<std::size_t>(stride) * j;
     const double* Pj = rj + kRowP;
@@ -240,7 +243,8 @@ void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kin
   for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
 }
 
-void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force) {
+void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
+                      const double* broken) {
   const double* xi0 = fam.x + 3 * i;
   const double* yi = y + 3 * i;
   const double* Ai = rows + static_cast<std::size_t>(stride) * i;
@@ -248,6 +252,7 @@ void addGatheredForce(const FamilyView& fam, int i, const double* y, const doubl
   const double ci = Ai[kRowC];
   double f[3] = {0.0, 0.0, 0.0};
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    if (broken && broken[b] != 0.0) continue;
     const int j = fam.neighbors[b];
     const double* Aj = rows + static_cast<std::size_t>(stride) * j;
     const double* Fj = Aj + kRowF;

@@ -14,7 +14,7 @@ struct ShapeAndGradient {
 };
 
 // K = sum omega xi (x) xi V_j and F = (sum omega Y (x) xi V_j) K^-1 of owned node i (V_j times the bond's
-// partial-volume fraction). planar: the family lies in z = 0. Throws InputError naming the point when K is
+// partial-volume fraction; a bond flagged in fam.brokenN takes omega' = 0, Li & Geng Eq. 49). planar: the family lies in z = 0. Throws InputError naming the point when K is
 // singular or ill-conditioned (fewer than three non-coplanar bonds, two non-parallel ones in 2D).
 ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar);
 // The same without the throw: false when K is singular (out is then unset).
@@ -40,20 +40,24 @@ void addCorrespondenceForce(const FamilyView& fam, int i, const Mat3& A, double*
 // The same two forces in gather form: owned node i's whole force density from its own family, each bond
 // counted from both ends, f_i += [omega (A_i + A_j) xi + hourglass of both ends] V_j (a neighbour's reaction
 // with the bond's own omega and partial-volume fraction: equal at both ends for equal horizons). rows: per
-// overlap node, stride values A (9), F (9), c (1) and 1 (kGatherRow; a row of zeros marks a node of a
+// overlap node, stride values A (9), F (9), c (1), 1, sigma1 (kGatherRow; a row of zeros marks a node of a
 // one-pass model, which adds its own reactions to i and receives i's as f_j -= T_i V_i). The sums run in
-// the family's order whatever the partition.
-constexpr int kRowA = 0, kRowF = 9, kRowC = 18, kRowFlag = 19, kGatherRow = 20;
+// the family's order whatever the partition. sigma1 (kRowS1): the largest principal Cauchy stress, for the
+// Maximum Principal Stress damage model (core/StressDamage.hpp; +inf for a point whose intact bonds no longer
+// give a regular K, so that its remaining bonds break).
+constexpr int kRowA = 0, kRowF = 9, kRowC = 18, kRowFlag = 19, kRowS1 = 20, kGatherRow = 21;
 // With the NDO band the row also holds P (9 values, row-major) at kRowP and the node's own K^-1 at kRowKinv (K is
-// constant: completeForce reads it instead of rebuilding it from the family on every evaluation).
-constexpr int kRowP = 20, kRowKinv = 29, kBandRow = 38;
-void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force);
+// constant without damage: completeForce reads it instead of rebuilding it from the family on every evaluation).
+constexpr int kRowP = 21, kRowKinv = 30, kBandRow = 39;
+// broken: per bond, the trial flags (1: the bond is absent from both ends' sums, stress and hourglass), or null.
+void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
+                      const double* broken = nullptr);
 
 // Li & Geng (seed 003) Eqs. 31-32 for owned node i of the surface band (fam.band): the NDO divergence
 // f_i += sum omega (P_j - P_i) K_i^-1 xi V_j, the hourglass term of addGatheredForce, and the traction term
 // -P_i n_i / dx of the outer layer (fam.outerNormal, fam.layerThickness). rows: kBandRow values per node.
 void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
-                  double* force);
+                  double* force, const double* broken = nullptr);
 
 // Peridigm's hourglass (zero-energy mode) force of owned node i: per bond, with the deformed bond Y and
 // its affine image F xi, T = c ((Y - F xi) . Y/|Y|) / |xi| Y/|Y|, added as f_i += T V_j, f_j -= T V_i.

@@ -5,6 +5,7 @@
 
 #include "CorrespondenceKinematics.hpp"
 #include "core/InputError.hpp"
+#include "core/StressDamage.hpp"
 
 namespace pf {
 namespace {
@@ -148,10 +149,19 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   const int n = fam.end - fam.begin;
   std::vector<Mat3> Kinv(n), F(n), R(n), tauN(n), de(n), tau(n);
   std::vector<double> Jn(dissipatedWanted_ ? n : 0);
+  // Stress damage (core/StressDamage.hpp): K and F leave out the bonds broken in fam.brokenN (omega' = 0). A point
+  // whose intact bonds no longer span the space (singular K) is detached: no stress and no hourglass term of its own,
+  // and sigma1 = +inf in its row so that its remaining bonds break at the next decision.
+  const bool stressDamage = fam.brokenN && fam.tensileStrength > 0.0;
+  std::vector<char> detached(stressDamage ? n : 0, 0);
   // Phase 1: kinematics of every owned node, from its own family.
   for (int k = 0; k < n; ++k) {
     const int i = fam.begin + k;
-    const ShapeAndGradient sg = shapeAndGradient(fam, i, y, planar);
+    ShapeAndGradient sg;
+    if (!stressDamage)
+      sg = shapeAndGradient(fam, i, y, planar);
+    else if (!tryShapeAndGradient(fam, i, y, planar, sg))
+      detached[k] = 1, sg.Kinv = Mat3{}, sg.F = Fs.committedAt(i);  // no increment: the stress update is trivial
     const PolarUpdate pu = flanaganTaylor(Fs.committedAt(i), sg.F, Rs.committedAt(i), Vs.committedAt(i));
     Kinv[k] = sg.Kinv, F[k] = sg.F, R[k] = pu.R, de[k] = pu.dUnrot, tauN[k] = taus.committedAt(i);
     if (dissipatedWanted_) Jn[k] = det(Fs.committedAt(i));
@@ -172,6 +182,7 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   const double* dissipatedN = dissipatedWanted_ ? state.committed("Dissipated_Energy") : nullptr;
   for (int k = 0; k < n; ++k) {
     const int i = fam.begin + k;
+    if (stressDamage && detached[k]) tau[k] = Mat3{};
     taus.set(i, tau[k]);
     vm[i] = vonMises(tau[k]);
     const Mat3 P = piolaFromUnrotated(F[k], R[k], tau[k]);
@@ -180,8 +191,13 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
       double* row = fam.exchange + static_cast<std::size_t>(fam.exchangeStride) * i;
       std::copy(A.begin(), A.end(), row + kRowA);
       std::copy(F[k].begin(), F[k].end(), row + kRowF);
-      row[kRowC] = c;
+      row[kRowC] = stressDamage && detached[k] ? 0.0 : c;
       row[kRowFlag] = 1.0;
+      // sigma1 always (a few flops per point): a damaged block's bond to a point of an undamaged correspondence block
+      // then sees that point's true sigma1 (a one-pass model's zero row gives 0).
+      double t6[6];
+      toSym6(tau[k], t6);
+      row[kRowS1] = stressDamage && detached[k] ? HUGE_VAL : maxPrincipal(t6);
       if (fam.band) {
         std::copy(P.begin(), P.end(), row + kRowP);
         std::copy(Kinv[k].begin(), Kinv[k].end(), row + kRowKinv);
@@ -205,15 +221,38 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
 
 int CorrespondenceMaterial::exchangeWidth(const FamilyView& fam) const { return fam.band ? kBandRow : kGatherRow; }
 
+// With the Maximum Principal Stress damage model (fam.tensileStrength > 0) each owned node first decides its
+// bonds from both ends' sigma1 in the rows (the owner of each end decides its half-bond from the same two numbers,
+// so the two halves agree at any rank count), writes every trial flag, its count and Damage (Eq. 51), and then
+// sums its force without the broken bonds. The shape tensors of this evaluation left out only the base set's
+// bonds (fam.brokenN): a bond broken now leaves K and F from the next evaluation on (quasi-static: the break
+// rounds solve the step again with it, so the state a step commits is consistent).
 void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* y, StateStore&, double* force) const {
-  for (int i = fam.begin; i < fam.end; ++i)
+  const bool stressDamage = fam.brokenN && fam.tensileStrength > 0.0;
+  const std::size_t stride = static_cast<std::size_t>(fam.exchangeStride);
+  for (int i = fam.begin; i < fam.end; ++i) {
+    if (stressDamage) {
+      const double s1i = fam.exchange[stride * i + kRowS1];
+      double count = 0.0;
+      for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+        const double s1j = fam.exchange[stride * fam.neighbors[b] + kRowS1];
+        const bool broken = bondBrokenByStress(fam.brokenN[b], s1i, s1j, fam.tensileStrength);
+        fam.broken[b] = broken ? 1.0 : 0.0;
+        count += broken ? 1.0 : 0.0;
+      }
+      const int nb = fam.offsets[i + 1] - fam.offsets[i];
+      fam.brokenCount[i] = count;
+      fam.damage[i] = nb > 0 ? count / nb : 0.0;
+    }
+    const double* broken = stressDamage ? fam.broken : nullptr;
     if (fam.band && fam.band[i] != 0.0) {
-      const double* row = fam.exchange + static_cast<std::size_t>(fam.exchangeStride) * i + kRowKinv;
+      const double* row = fam.exchange + stride * i + kRowKinv;
       Mat3 Kinv;
       std::copy(row, row + 9, Kinv.begin());
-      addBandForce(fam, i, y, Kinv, fam.exchange, fam.exchangeStride, force);
+      addBandForce(fam, i, y, Kinv, fam.exchange, fam.exchangeStride, force, broken);
     } else
-      addGatheredForce(fam, i, y, fam.exchange, fam.exchangeStride, force);
+      addGatheredForce(fam, i, y, fam.exchange, fam.exchangeStride, force, broken);
+  }
 }
 
 void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {

@@ -27,6 +27,9 @@ class CorrespondenceMaterial : public Material {
   int exchangeWidth(const FamilyView& fam) const override;
   void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   bool supportsSurfaceBand() const override { return true; }
+  // Maximum Principal Stress damage (core/StressDamage.hpp), in the gather form only (a model run): each row
+  // carries its point's sigma1, completeForce decides the bonds and leaves the broken ones out.
+  bool breaksBondsByStress() const override { return true; }
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
   void enableOutput(const std::string& name) const override;

@@ -45,6 +45,9 @@ struct FamilyView {
   const double* brokenCountN = nullptr;
   double* brokenCount = nullptr;
   double criticalStretch = 0.0;     // a bond breaks once (|y_j - y_i| - |xi|) / |xi| exceeds it
+  // Maximum Principal Stress damage (core/StressDamage.hpp): > 0 is f_t, a bond breaks once the mean of its ends'
+  // sigma1 exceeds it (then criticalStretch is 0 and unused); HUGE_VAL: the base set is kept, nothing new breaks.
+  double tensileStrength = 0.0;
   int numNodes = 0;                 // size of the overlap node arrays (x, volume, y, force: per node)
   // Time of the state being evaluated (the time the solver last imposed boundary conditions for) and of
   // the reference state (the run's first such time). Rate-independent models ignore both; a rate-dependent

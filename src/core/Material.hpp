@@ -62,6 +62,10 @@ class Material {
   // Whether computeForce honours FamilyView's bond damage (core/BondDamage.hpp). A block with a damage model
   // and a material that does not is refused at input, so no deck silently runs without its breaks.
   virtual bool breaksBonds() const { return false; }
+  // Whether the model applies the Maximum Principal Stress damage model (core/StressDamage.hpp; FamilyView::
+  // tensileStrength): it has a Cauchy stress per point and decides each bond from both ends' sigma1. A block with
+  // that damage model and a material that returns false is refused at input.
+  virtual bool breaksBondsByStress() const { return false; }
 
   // Loading-balance correction (Li & Geng, seed 003, Sec. 4.1; solvers/YieldRounds.hpp). True: computeForce
   // honours FamilyView::admitted (a point flagged 0 takes the elastic trial state) and writes, on every

@@ -1,5 +1,6 @@
-// The optional "Damage Models" list -> DamageModelSpecs. Peridigm's one bond-breaking model, "Critical
-// Stretch"; a block uses one through its "Damage Model" parameter (BlocksInput.cpp).
+// The optional "Damage Models" list -> DamageModelSpecs. Peridigm's bond-breaking model "Critical Stretch" and
+// Li & Geng's "Maximum Principal Stress" (seed 003, Eqs. 49-51; correspondence models only, ModelBuilder.cpp);
+// a block uses one through its "Damage Model" parameter (BlocksInput.cpp).
 #include "Sections.hpp"
 
 namespace pf {
@@ -7,12 +8,23 @@ namespace pf {
 namespace {
 using S = ParameterSpec;
 const char* const kCriticalStretch = "Critical Stretch";
+const char* const kMaxPrincipal = "Maximum Principal Stress";
 }  // namespace
 
 std::vector<ParameterSpec> criticalStretchSpecs() {
-  return {S::text("Damage Model", "`Critical Stretch` (Peridigm's name; the only model)").need(),
+  return {S::text("Damage Model", "`Critical Stretch` (Peridigm's name)").need(),
           S::real("Critical Stretch",
                   "s_c: a bond breaks, for good, once (|y_j − y_i| − |ξ|)/|ξ| > s_c (tension only, as Peridigm)")
+              .need()
+              .positive()};
+}
+
+std::vector<ParameterSpec> maximumPrincipalStressSpecs() {
+  return {S::text("Damage Model", "`Maximum Principal Stress` (Li & Geng 2024, Eqs. 49-51; correspondence models only)")
+              .need(),
+          S::real("Tensile Strength",
+                  "f_t [Pa]: a bond breaks, for good, once the mean of its two ends' largest principal Cauchy stress "
+                  "exceeds it, (sigma1_i + sigma1_j)/2 > f_t")
               .need()
               .positive()};
 }
@@ -29,10 +41,16 @@ std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string
     if (!d.isParameter("Damage Model")) fail(file, path, "missing required parameter 'Damage Model'");
     if (!d.getEntry("Damage Model").isType<std::string>()) fail(file, path, "'Damage Model' must be a string");
     const std::string model = d.get<std::string>("Damage Model");
+    if (model == kMaxPrincipal) {
+      const ParameterValues v = readList(d, maximumPrincipalStressSpecs(), {}, file, path);
+      out.push_back(DamageModelSpec{name, model, 0.0, v.get("Tensile Strength")});
+      continue;
+    }
     if (model != kCriticalStretch)
-      fail(file, path, "unknown 'Damage Model' = '" + model + "' (known: '" + kCriticalStretch + "')");
+      fail(file, path, "unknown 'Damage Model' = '" + model + "' (known: '" + kCriticalStretch + "', '" +
+                           kMaxPrincipal + "')");
     const ParameterValues v = readList(d, criticalStretchSpecs(), {}, file, path);
-    out.push_back(DamageModelSpec{name, model, v.get("Critical Stretch")});
+    out.push_back(DamageModelSpec{name, model, v.get("Critical Stretch"), 0.0});
   }
   return out;
 }

@@ -53,12 +53,14 @@ struct MaterialSpec {
   MaterialInput values;               // checked against entry->parameters
 };
 
-// A "Damage Models" entry. Only Peridigm's "Critical Stretch" model: a bond breaks, for good, once its
-// stretch (|y_j - y_i| - |xi|) / |xi| exceeds criticalStretch (core/BondDamage.hpp).
+// A "Damage Models" entry. Peridigm's "Critical Stretch": a bond breaks, for good, once its stretch
+// (|y_j - y_i| - |xi|) / |xi| exceeds criticalStretch (core/BondDamage.hpp); Li & Geng's "Maximum Principal
+// Stress": once the mean of its ends' largest principal Cauchy stress exceeds tensileStrength (core/StressDamage.hpp).
 struct DamageModelSpec {
   std::string name;                   // the sub-list name in Damage Models
-  std::string model;                  // "Critical Stretch"
-  double criticalStretch = 0.0;       // > 0
+  std::string model;                  // "Critical Stretch" or "Maximum Principal Stress"
+  double criticalStretch = 0.0;       // > 0 for Critical Stretch, else 0
+  double tensileStrength = 0.0;       // > 0 for Maximum Principal Stress, else 0
 };
 
 struct BlockGroupSpec {

@@ -38,6 +38,8 @@ std::vector<ParameterTable> parameterTables() {
       {"hole-box", "Discretization/Holes/<any name> (Box With Holes)", holeSpecs(true)},
       {"blocks", "Blocks/<any name>", blockSpecs()},
       {"damage: Critical Stretch", "Damage Models/<any name> with Damage Model = Critical Stretch", criticalStretchSpecs()},
+      {"damage: Maximum Principal Stress", "Damage Models/<any name> with Damage Model = Maximum Principal Stress",
+       maximumPrincipalStressSpecs()},
       {"node-set-region", "Boundary Conditions/<name> with Type = Node Set Region", regionSpecs()},
       {"condition", "Boundary Conditions/<name> (a condition)", conditionSpecs()},
       {"rigid-wall", "Boundary Conditions/<name> with Type = Rigid Wall", rigidWallSpecs()},

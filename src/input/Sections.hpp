@@ -29,6 +29,7 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
 
 // Damage Models (optional; before Blocks, which name them).
 std::vector<ParameterSpec> criticalStretchSpecs();
+std::vector<ParameterSpec> maximumPrincipalStressSpecs();
 std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file);
 
 // Boundary Conditions: node sets first (a condition may name a set defined after it), then conditions.

@@ -45,7 +45,7 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
     for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);
   }
-  for (const BlockModel& b : blocks_) hasDamage_ = hasDamage_ || b.criticalStretch > 0.0;
+  for (const BlockModel& b : blocks_) hasDamage_ = hasDamage_ || b.damaged();
   if (hasDamage_) {
     specs.push_back({"Bond_Damage", Location::Bond, true, false});
     specs.push_back({"Broken_Bonds", Location::Node, true, false});
@@ -69,14 +69,16 @@ FamilyView Model::view(const BlockModel& b) {
   FamilyView v = blockView(b);
   // Each model writes the rows of its own owned nodes (blocks own disjoint node ranges).
   if (exchangeWidth_ > 0) v.exchange = exchange_.data(), v.exchangeStride = exchangeWidth_;
-  if (b.criticalStretch > 0.0) {  // else brokenN stays null: the kernels' undamaged path
+  if (b.damaged()) {  // else brokenN stays null: the kernels' undamaged path
     v.brokenN = rounds_ ? baseBroken_.data() : state_.committed("Bond_Damage");
     v.brokenCountN = rounds_ ? baseCount_.data() : state_.committed("Broken_Bonds");
     v.broken = state_.trial("Bond_Damage");
     v.damage = state_.trial("Damage");
     v.brokenCount = state_.trial("Broken_Bonds");
     // Frozen: no stretch exceeds infinity, so exactly the base set is broken.
-    v.criticalStretch = rounds_ && !breaking_ ? HUGE_VAL : b.criticalStretch;
+    const bool frozen = rounds_ && !breaking_;
+    if (b.criticalStretch > 0.0) v.criticalStretch = frozen ? HUGE_VAL : b.criticalStretch;
+    if (b.tensileStrength > 0.0) v.tensileStrength = frozen ? HUGE_VAL : b.tensileStrength;
   }
   if (yieldRounds_) v.admitted = admitted_.data();  // else null: every point may yield
   return v;

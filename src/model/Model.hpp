@@ -27,6 +27,8 @@ struct BlockModel {
   std::shared_ptr<const Material> material;
   double criticalStretch = 0.0;  // the block's Critical Stretch damage model; 0: no damage model (nothing breaks)
   bool surfaceBand = false;      // Surface Correction = NDO Band (model/SurfaceBand.hpp)
+  double tensileStrength = 0.0;  // the block's Maximum Principal Stress damage model (f_t); 0: not that model
+  bool damaged() const { return criticalStretch > 0.0 || tensileStrength > 0.0; }
 };
 
 // A displacement, velocity or body-force component imposed on owned nodes: value(x, t), times factor[k]
@@ -80,8 +82,8 @@ class Model {
   // Quasi-static break rounds (solvers/BreakRounds.hpp; docs/input.md, "Damage Models"). Between
   // beginBreakRounds and endBreakRounds the kernels take their flags from a base set (the committed one at
   // first) instead of the committed one: setBreaking(false) keeps exactly the base broken (no new break, for
-  // the iterations of a solve), setBreaking(true) adds the bonds stretched past s_c (the check at a converged
-  // state); adoptBreaks makes the last evaluation's trial flags the base and returns how many bonds that added
+  // the iterations of a solve), setBreaking(true) adds the bonds stretched past s_c or stressed past f_t (the
+  // check at a converged state); adoptBreaks makes the last evaluation's trial flags the base and returns how many bonds that added
   // (collective). No-ops without damage.
   void beginBreakRounds();
   void setBreaking(bool on) { breaking_ = on; }

@@ -22,6 +22,7 @@ struct BlockSpec {
   std::shared_ptr<const Material> material;
   double criticalStretch = 0.0;  // 0: no damage model
   bool ndoBand = false;
+  double tensileStrength = 0.0;  // Maximum Principal Stress damage; 0: not that model
 };
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
@@ -38,7 +39,11 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
   };
   auto specOf = [&](const BlockGroupSpec& g, int id) {
     const DamageModelSpec* d = deck.damageModel(g.damageModel);
-    if (d && !materialOf(g.material)->breaksBonds())
+    if (d && d->tensileStrength > 0.0 && !materialOf(g.material)->breaksBondsByStress())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model' = '" + g.damageModel + "' (" + d->model +
+                       "): material '" + g.material + "' (" + deck.material(g.material).entry->model +
+                       ") has no Cauchy stress per point; Maximum Principal Stress works with the correspondence models");
+    if (d && d->criticalStretch > 0.0 && !materialOf(g.material)->breaksBonds())
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model' = '" + g.damageModel + "': material '" +
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
@@ -48,7 +53,7 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") has no first Piola stress; the band works with the correspondence models");
     return BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material),
-                     d ? d->criticalStretch : 0.0, g.ndoBand};
+                     d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
   };
   for (const BlockGroupSpec& g : deck.blocks)
     for (int id : g.blockIds) blocks[id] = specOf(g, id);
@@ -206,7 +211,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
     const BlockSpec& s = blocks.at(r.blockId);
     blockModels.push_back(
         BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
-                   s.ndoBand});
+                   s.ndoBand, s.tensileStrength});
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;
