@@ -1,6 +1,6 @@
 // GhostTransfers on Tpetra (issue 20): one point map per width, each point's ncomp values as global entries
-// ncomp * gid + c, with an Import (owned to overlap, rank 0) and an Export (overlap to owned) per width. Tpetra
-// vectors own their storage, so the calls copy the caller's arrays in and out (Serial node: host memory).
+// ncomp * gid + c, with an Import (owned to overlap, rank 0) and an Export (overlap to owned) per width. The
+// vectors are views of the caller's arrays (wrap), so nothing is copied beyond what the transfer moves.
 #include <Kokkos_Core.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Export.hpp>
@@ -8,7 +8,6 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include <algorithm>
 #include <cstdlib>
 #include <map>
 
@@ -42,14 +41,13 @@ Teuchos::RCP<const Map> pointMap(const std::vector<int>& gids, std::size_t count
   return Teuchos::rcp(new Map(any, Teuchos::ArrayView<const GO>(entries.data(), entries.size()), 0, comm));
 }
 
-void copyIn(const double* from, Vec& v) {
-  Teuchos::ArrayRCP<double> d = v.getDataNonConst();
-  std::copy(from, from + d.size(), d.begin());
-}
-
-void copyOut(const Vec& v, double* to) {
-  Teuchos::ArrayRCP<const double> d = v.getData();
-  std::copy(d.begin(), d.end(), to);
+// A Tpetra vector on the caller's array (no copy): an unmanaged host view in both halves of the dual view (the
+// Serial node's device memory is host memory, so Tpetra's syncs between them copy nothing).
+Vec wrap(const Teuchos::RCP<const Map>& map, const double* data) {
+  const std::size_t n = map->getNodeNumElements();
+  Vec::dual_view_type::t_dev d(const_cast<double*>(data), n, 1);
+  Vec::dual_view_type::t_host h(const_cast<double*>(data), n, 1);
+  return Vec(map, Vec::dual_view_type(d, h));
 }
 
 class TpetraTransfers final : public GhostTransfers {
@@ -63,18 +61,16 @@ class TpetraTransfers final : public GhostTransfers {
 
   void importToOverlap(const double* owned, double* overlap, int ncomp) const override {
     const Width& w = width(ncomp);
-    copyIn(owned, *w.ownedVec);
-    w.overlapVec->doImport(*w.ownedVec, *w.import, Tpetra::INSERT);
-    copyOut(*w.overlapVec, overlap);
+    Vec dst = wrap(w.overlap, overlap);
+    dst.doImport(wrap(w.owned, owned), *w.import, Tpetra::INSERT);
   }
 
   void exportAdd(const double* overlap, double* owned, int ncomp) const override {
     const Width& w = width(ncomp);
     if (w.exporter.is_null()) w.exporter = Teuchos::rcp(new Tpetra::Export<>(w.overlap, w.owned));
-    copyIn(overlap, *w.overlapVec);
-    w.ownedVec->putScalar(0.0);
-    w.ownedVec->doExport(*w.overlapVec, *w.exporter, Tpetra::ADD);
-    copyOut(*w.ownedVec, owned);
+    Vec dst = wrap(w.owned, owned);
+    dst.putScalar(0.0);
+    dst.doExport(wrap(w.overlap, overlap), *w.exporter, Tpetra::ADD);
   }
 
   std::vector<double> gatherToRoot(const double* owned, int ncomp) const override {
@@ -85,11 +81,9 @@ class TpetraTransfers final : public GhostTransfers {
       w.root = pointMap(all, all.size(), ncomp, comm_);
       w.rootImport = Teuchos::rcp(new Tpetra::Import<>(w.owned, w.root));
     }
-    Vec dst(w.root);
-    copyIn(owned, *w.ownedVec);
-    dst.doImport(*w.ownedVec, *w.rootImport, Tpetra::INSERT);
     std::vector<double> out(rank_ == 0 ? static_cast<std::size_t>(ncomp) * numGlobal_ : 0);
-    copyOut(dst, out.data());
+    Vec dst = wrap(w.root, out.data());
+    dst.doImport(wrap(w.owned, owned), *w.rootImport, Tpetra::INSERT);
     return out;
   }
 
@@ -100,7 +94,6 @@ class TpetraTransfers final : public GhostTransfers {
     mutable Teuchos::RCP<const Tpetra::Export<>> exporter;
     mutable Teuchos::RCP<const Map> root;
     mutable Teuchos::RCP<const Tpetra::Import<>> rootImport;
-    Teuchos::RCP<Vec> ownedVec, overlapVec;  // reused by every call of this width
   };
   const Width& width(int ncomp) const {
     Width& w = widths_[ncomp];
@@ -108,8 +101,6 @@ class TpetraTransfers final : public GhostTransfers {
       w.owned = pointMap(gids_, static_cast<std::size_t>(numOwned_), ncomp, comm_);
       w.overlap = pointMap(gids_, gids_.size(), ncomp, comm_);
       w.import = Teuchos::rcp(new Tpetra::Import<>(w.owned, w.overlap));
-      w.ownedVec = Teuchos::rcp(new Vec(w.owned));
-      w.overlapVec = Teuchos::rcp(new Vec(w.overlap));
     }
     return w;
   }
