@@ -5,7 +5,7 @@
 namespace pf {
 
 #ifndef PERIFORGE_TRANSFERS
-#define PERIFORGE_TRANSFERS "Epetra"
+#define PERIFORGE_TRANSFERS "Tpetra"
 #endif
 
 std::unique_ptr<GhostTransfers> makeGhostTransfers(const Communicator& comm, int numOwned, const std::vector<int>& gids,

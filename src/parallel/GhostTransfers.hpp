@@ -2,8 +2,8 @@
 // The data movement of a DistributedLayout: owned values to the ghosts (import), ghost contributions added back
 // to their owners (export), and every point's values to rank 0 in cloud order (checkpoints). Values are
 // interleaved, ncomp per point, in the layout's owned / overlap order. Two implementations during the move off
-// Epetra (issue 20): Epetra's and Tpetra's maps, Import and Export; CMake's PERIFORGE_TRANSFERS picks the one
-// makeGhostTransfers builds. Every call is collective; a width's maps are built on its first use.
+// Epetra (issue 20): Tpetra's maps, Import and Export (the default) and Epetra's (kept for comparison until
+// Epetra goes); CMake's PERIFORGE_TRANSFERS picks the one makeGhostTransfers builds. Every call is collective; a width's maps are built on its first use.
 #include <memory>
 #include <string>
 #include <vector>
