@@ -109,14 +109,17 @@ void printDone(const OutputFanout& output, Clock::time_point start) {
 // Collective. What each rank owns and receives per exchange (scripts/comm_model predicts the same from the
 // partition's geometry): owned and ghost points per rank, and the ranks a rank receives ghosts from.
 void reportPartition(const DistributedLayout& layout) {
-  const double owned = layout.numOwned(), ghosts = layout.numGhosts(), sources = layout.numGhostSources();
-  const double ownedMax = layout.max(owned), ownedMin = -layout.max(-owned);
-  const double ghostMax = layout.max(ghosts), ghostMin = -layout.max(-ghosts), ghostSum = layout.sum(ghosts);
-  const double sourcesMax = layout.max(sources);
+  const double ghosts = layout.numGhosts();
+  // One reduction for the maxima (a minimum is the maximum of the negated value), one for the total.
+  const double owned = layout.numOwned();
+  const double mine[5] = {owned, -owned, ghosts, -ghosts, static_cast<double>(layout.numGhostSources())};
+  double all[5];
+  layout.comm().max(mine, all, 5);
+  const double ghostSum = layout.sum(ghosts);
   if (layout.rank() == 0)
     std::printf("partition: owned points per rank %.0f..%.0f, ghost points per rank %.0f..%.0f (total %.0f), "
                 "ranks a rank receives from: at most %.0f\n",
-                ownedMin, ownedMax, ghostMin, ghostMax, ghostSum, sourcesMax);
+                -all[1], all[0], -all[3], all[2], ghostSum, all[4]);
 }
 
 // Throws on failure, after marking every output list's files as failed or interrupted.
