@@ -14,7 +14,7 @@ namespace pf {
 
 namespace {
 // One tag for every chunk message: MPI keeps messages from one sender in order, and rank 0 receives the
-// chunks in order, so chunk k's message from rank r is the next one from r. Epetra's tags are far apart.
+// chunks in order, so chunk k's message from rank r is the next one from r. Trilinos' tags are far apart.
 constexpr int kTag = 19019;
 }  // namespace
 

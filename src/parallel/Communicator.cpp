@@ -6,14 +6,14 @@
 
 namespace pf {
 
-// MPI_COMM_WORLD itself, not a duplicate: Epetra_MpiComm(MPI_COMM_WORLD) was used that way before, and
-// nothing then has to be freed before MPI_Finalize.
+// MPI_COMM_WORLD itself, not a duplicate: nothing then has to be freed before MPI_Finalize, and Tpetra's
+// communicators made on it address the same ranks.
 Communicator Communicator::world() { return Communicator(std::make_shared<const Impl>(MPI_COMM_WORLD)); }
 
 const Communicator::Impl& Communicator::impl() const { return *impl_; }
 
-int Communicator::rank() const { return impl_->epetra.MyPID(); }
-int Communicator::size() const { return impl_->epetra.NumProc(); }
+int Communicator::rank() const { return impl_->rank; }
+int Communicator::size() const { return impl_->size; }
 
 double Communicator::sum(double v) const {
   double g = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// A group of MPI ranks and the reductions the solvers and writers need, with neither mpi.h nor Epetra in
+// A group of MPI ranks and the reductions the solvers and writers need, with neither mpi.h nor Trilinos in
 // sight: above src/parallel, code sees ranks, sums and maxima only. Copies share one communicator. The
 // MPI run itself (init/finalize) is an MpiSession, owned by the executable's main.
 #include <memory>
@@ -15,7 +15,7 @@ class Communicator {
   int rank() const;
   int size() const;
   // Reductions over all ranks, every rank gets the result (MPI_Allreduce on doubles, as Epetra's
-  // SumAll/MaxAll, so results are bit-identical to theirs). in and out must not overlap.
+  // SumAll/MaxAll were, so results are bit-identical to the code's before issue 20). in and out must not overlap.
   double sum(double v) const;
   double max(double v) const;
   void sum(const double* in, double* out, int n) const;
@@ -30,7 +30,7 @@ class Communicator {
   // Collective: every rank returns root's text (the others' argument is ignored).
   std::string broadcast(const std::string& text, int root) const;
 
-  struct Impl;  // defined in parallel/CommunicatorImpl.hpp (the MPI_Comm and an Epetra_MpiComm on it)
+  struct Impl;  // defined in parallel/CommunicatorImpl.hpp (the MPI_Comm, its rank and size)
   const Impl& impl() const;
 
  private:

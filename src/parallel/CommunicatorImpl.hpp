@@ -1,7 +1,6 @@
 #pragma once
-// What a Communicator is made of, for src/parallel and the Epetra adapters (the NOX solver) only: the
-// MPI communicator and an Epetra_MpiComm on it (no duplicate: both address the same ranks and tags).
-#include <Epetra_MpiComm.h>
+// What a Communicator is made of, for src/parallel and the Trilinos adapters (the NOX solver) only: the MPI
+// communicator, from which Tpetra's Teuchos::MpiComm is made where one is needed.
 #include <mpi.h>
 
 #include "parallel/Communicator.hpp"
@@ -9,9 +8,12 @@
 namespace pf {
 
 struct Communicator::Impl {
-  explicit Impl(MPI_Comm c) : mpi(c), epetra(c) {}
+  explicit Impl(MPI_Comm c) : mpi(c) {
+    MPI_Comm_rank(c, &rank);
+    MPI_Comm_size(c, &size);
+  }
   MPI_Comm mpi;
-  Epetra_MpiComm epetra;
+  int rank = 0, size = 1;
 };
 
 }  // namespace pf

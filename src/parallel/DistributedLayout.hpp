@@ -1,6 +1,6 @@
 #pragma once
 // The points' distribution over ranks: owned and overlap (owned + ghost) points, copying owned values to
-// ghosts and adding ghost contributions back (parallel/GhostTransfers: Epetra's or Tpetra's). Owned
+// ghosts and adding ghost contributions back (parallel/GhostTransfers, on Tpetra). Owned
 // points are ordered by block, then along a Hilbert curve, so a family sits close in memory; bonds of
 // the owned points are built here once, on reference positions, in overlap-local indices.
 #include <array>

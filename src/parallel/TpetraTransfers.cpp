@@ -1,18 +1,17 @@
 // GhostTransfers on Tpetra (issue 20): one point map per width, each point's ncomp values as global entries
 // ncomp * gid + c, with an Import (owned to overlap, rank 0) and an Export (overlap to owned) per width. The
 // vectors are views of the caller's arrays (wrap), so nothing is copied beyond what the transfer moves.
-#include <Kokkos_Core.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include <cstdlib>
 #include <map>
 
 #include "parallel/CommunicatorImpl.hpp"
 #include "parallel/GhostTransfers.hpp"
+#include "parallel/KokkosRuntime.hpp"
 
 namespace pf {
 
@@ -21,16 +20,6 @@ namespace {
 using Map = Tpetra::Map<>;
 using GO = Map::global_ordinal_type;
 using Vec = Tpetra::Vector<double>;
-
-// Tpetra's vectors are Kokkos views: Kokkos must be up before the first one, and is taken down at exit, after
-// every layout is gone (a layout lives inside main's scope).
-void ensureKokkos() {
-  if (Kokkos::is_initialized()) return;
-  Kokkos::initialize();
-  std::atexit([] {
-    if (Kokkos::is_initialized()) Kokkos::finalize();
-  });
-}
 
 Teuchos::RCP<const Map> pointMap(const std::vector<int>& gids, std::size_t count, int ncomp,
                                  const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {

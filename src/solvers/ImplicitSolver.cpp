@@ -41,6 +41,7 @@ SolverEntry ImplicitSolver::entry() {
     o.newton.maxIterations = static_cast<int>(p.get("Maximum Solver Iterations"));
     o.newton.verbose = p.flag("Verbose");
     o.where = p.where();
+    o.newton.where = o.where;
     return std::unique_ptr<Solver>(new ImplicitSolver(o));
   };
   return e;

@@ -4,6 +4,7 @@
 //   f(u) + b(t) - c (u - u~) = 0          (c = 0: equilibrium; c = rho / (beta dt^2): a Newmark step)
 // and u = u(t) on prescribed ones; the preconditioner (pair stiffness + c) is built once per engine.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/ParamTree.hpp"
@@ -11,6 +12,7 @@
 namespace pf {
 
 class Model;
+class KrylovSolver;
 
 struct NewtonKrylovOptions {
   double relativeTolerance = 1e-10;  // of the load scale (reaction + body force + inertia), as ADR's
@@ -27,7 +29,12 @@ struct NewtonKrylovOptions {
   // it keeps every bond, and cutting further there cost more iterations than it saved.
   double precBondRadius = 3.0;
   ParamTree nox;                     // "Direction", "Line Search", "Printing", ... passed to NOX
+  std::string where;                 // the deck's solver list ("input.xml: Solver/NOXQuasiStatic"), for errors
 };
+
+// Throws InputError (naming opt.where and the parameter) when the NOX lists ask for a Krylov method or
+// preconditioner the engine does not have; called when the deck is read, not at the first solve.
+void checkLinearSolver(const NewtonKrylovOptions& opt);
 
 // The inertia term of a Newmark step: c per dof (rho / (beta dt^2), the same at every call of one engine,
 // since the preconditioner holds it) and the predictor u~. Prescribed dofs ignore both.
@@ -62,9 +69,7 @@ class NewtonKrylov {
 
  private:
   NewtonKrylovOptions opt_;
-  struct Linear;                    // Epetra map, pair stiffness and its preconditioner (the .cpp)
-  std::unique_ptr<Linear> linear_;  // built on first use, kept for the engine's life
-  double scale_ = 1.0;              // the matrix' mean free diagonal: the weight of prescribed rows
+  std::unique_ptr<KrylovSolver> krylov_;  // pair stiffness and its preconditioner: built on first use, kept
 };
 
 }  // namespace pf

@@ -2,6 +2,8 @@
 
 #include <NOX_Utils.H>
 
+#include "core/InputError.hpp"
+
 namespace pf {
 
 namespace {
@@ -44,11 +46,41 @@ Teuchos::RCP<Teuchos::ParameterList> noxParameters(const NewtonKrylovOptions& op
   setDefault(ls, "Tolerance", 1e-9);
   setDefault(ls, "Size of Krylov Subspace", 200);
   setDefault(ls, "Preconditioner", "ML");
-  setDefault(ls, "Preconditioner Reuse Policy", "Reuse");
-  setDefault(ls, "Max Age Of Prec", 1000000);
-  setDefault(ls, "Output Frequency", 0);
   setDefault(params->sublist("Line Search"), "Method", "Polynomial");
   return params;
+}
+
+LinearSolverChoice linearSolverChoice(Teuchos::ParameterList& ls, const std::string& where) {
+  const std::string at = where + "/Direction/Newton/Linear Solver: ";
+  LinearSolverChoice c;
+  const std::string method = ls.get<std::string>("Aztec Solver", "GMRES");
+  if (method != "GMRES") throw InputError(at + "'Aztec Solver' = '" + method + "': only GMRES (Belos) is available");
+  const std::string type = ls.get<std::string>("Preconditioner", "ML");
+  if (type == "ML" || type == "MueLu") {
+    c.preconditioner = LinearSolverChoice::Preconditioner::MueLu;
+    if (ls.isSublist("ML"))
+      throw InputError(at + "the 'ML' sub-list is not read since ML gave way to MueLu (issue 20); give MueLu's "
+                       "parameter names in a 'MueLu' sub-list");
+  } else if (type == "New Ifpack" || type == "Ifpack2") {
+    c.preconditioner = LinearSolverChoice::Preconditioner::Ifpack2;
+    c.ifpack2Type = ls.get<std::string>("Ifpack Preconditioner", "ILU");
+    if (c.ifpack2Type == "ILU") c.ifpack2Type = "RILUK";
+    if (c.ifpack2Type != "RILUK" && c.ifpack2Type != "ILUT" && c.ifpack2Type != "RELAXATION" &&
+        c.ifpack2Type != "CHEBYSHEV")
+      throw InputError(at + "'Ifpack Preconditioner' = '" + c.ifpack2Type +
+                       "': use ILU, ILUT, RELAXATION or CHEBYSHEV (Ifpack2's)");
+  } else if (type == "None") {
+    c.preconditioner = LinearSolverChoice::Preconditioner::None;
+  } else {
+    throw InputError(at + "'Preconditioner' = '" + type + "': use ML (MueLu), New Ifpack (Ifpack2) or None");
+  }
+  return c;
+}
+
+void checkLinearSolver(const NewtonKrylovOptions& opt) {
+  bool adaptive = false;
+  auto params = noxParameters(opt, 0, &adaptive);
+  linearSolverChoice(params->sublist("Direction").sublist("Newton").sublist("Linear Solver"), opt.where);
 }
 
 }  // namespace pf

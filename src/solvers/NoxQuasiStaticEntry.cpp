@@ -32,6 +32,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
   o.newton.precBondRadius = p.get("Preconditioner Bond Radius", o.newton.precBondRadius);
   if (p.has("Jacobian")) o.newton.exactJacobian = p.text("Jacobian") == "Exact";
   o.newton.nox = passThrough;
+  o.newton.where = p.where();
   if (p.has("Nonlinear Solver")) {
     ParamTree::Entry e;
     e.name = "Nonlinear Solver";
@@ -39,6 +40,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
     e.text = p.text("Nonlinear Solver");
     o.newton.nox.entries.push_back(e);
   }
+  checkLinearSolver(o.newton);
   o.fallback.relativeTolerance = std::max(o.newton.relativeTolerance, 1e-10);  // ADR's round-off floor is ~3e-13
   o.fallback.absoluteTolerance = o.newton.absoluteTolerance;
   return std::unique_ptr<Solver>(new NoxQuasiStaticSolver(o));
@@ -49,7 +51,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
 SolverEntry NoxQuasiStaticSolver::entry() {
   SolverEntry e;
   e.name = "NOXQuasiStatic";
-  e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES, Ifpack/ML preconditioner)";
+  e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES by Belos, MueLu or Ifpack2 preconditioner)";
   e.loadSteps = true;
   e.parameters = commonSpecs();
   e.parameters.insert(e.parameters.begin(), S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1));

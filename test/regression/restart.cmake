@@ -5,19 +5,23 @@
 # missing checkpoint gives one line and a non-zero exit at np 1 and 2 (run_restart.py). Each case runs in
 # its own temporary directory under a timeout: a hang fails the test instead of stalling the suite.
 set(RST ${CMAKE_CURRENT_SOURCE_DIR}/regression/restart)
-# CSV bounds for np 2 -> 1, about 5x the uninterrupted np 1 vs np 2 differences measured on the same decks
-# (max over all rows). Bar (Verlet): reactions 2.1e-8 N (of 4.7e3 N; the Y ones are zero but for round-off),
-# displacement 6.2e-17 m (of 7e-5), dilatation 3.2e-15 (of 4e-4). Plate (NOX, relative tolerance 1e-7, so
-# iterates differ within it): reactions 3.1e-5 N (of 4e4 N), stress 3.8 Pa (of 7e8), plastic strain 1.9e-10
-# (of 5e-3), displacement of the driven layer 1.6e-12 m. Time, step and the applied displacement: exact.
+# CSV bounds for np 2 -> 1. Bar (Verlet): about 5x the uninterrupted np 1 vs np 2 differences (max over all
+# rows): reactions 2.1e-8 N (of 4.7e3 N; the Y ones are zero but for round-off), displacement 6.2e-17 m (of
+# 7e-5), dilatation 3.2e-15 (of 4e-4). Plate (NOX, relative tolerance 1e-7, so iterates differ within it):
+# the tolerance carried to each column, 1e-7 of its largest value: reactions 4e-3 N (the force residual
+# bound itself, 1e-7 of the 4e4 N load), stress 70 Pa (of 7e8), displacement of the driven layer 2.5e-11 m
+# (of the plate's 2.5e-4); plastic strain 1e-9 (of 5e-3; 1e-7 of it would be 5e-10, the looser bound kept
+# from before). Measured np 1 vs np 2, Epetra/ML then Tpetra/MueLu (issue 20): reactions 8.6e-5 / 4.3e-4 N,
+# probe stress 3.4 / 14.9 Pa, plastic strain 1.3e-10 / 9.8e-11, driven layer 3.7e-12 / 1.0e-11 m. Time,
+# step and the applied displacement: exact.
 set(restart_bar_tols --default abs:1e-7 --tol time=abs:0 --tol step=abs:0
     --tol Probe_Q1_DisplacementX=abs:3e-16 --tol Probe_Q1_DisplacementY=abs:3e-16 --tol Probe_Q1_DisplacementZ=abs:0
     --tol Probe_Q3_DisplacementX=abs:3e-16 --tol Probe_Q3_DisplacementY=abs:3e-16 --tol Probe_Q3_DisplacementZ=abs:0
     --tol Probe_Q1_Dilatation=abs:2e-14)
-set(restart_plate_tols --default abs:2e-4 --tol time=abs:0 --tol step=abs:0 --tol Applied_Displacement=abs:0
-    --tol Probe_A_Signed_Von_Mises_Stress=abs:20 --tol Probe_B_Signed_Von_Mises_Stress=abs:20
+set(restart_plate_tols --default abs:4e-3 --tol time=abs:0 --tol step=abs:0 --tol Applied_Displacement=abs:0
+    --tol Probe_A_Signed_Von_Mises_Stress=abs:70 --tol Probe_B_Signed_Von_Mises_Stress=abs:70
     --tol Probe_A_Equivalent_Plastic_Strain=abs:1e-9 --tol Probe_B_Equivalent_Plastic_Strain=abs:1e-9
-    --tol Probe_Applied_DisplacementX=abs:1e-11 --tol Probe_Applied_DisplacementY=abs:1e-11
+    --tol Probe_Applied_DisplacementX=abs:2.5e-11 --tol Probe_Applied_DisplacementY=abs:2.5e-11
     --tol Probe_Applied_DisplacementZ=abs:0)
 foreach(deck bar plate)
   if(deck STREQUAL "bar")

@@ -91,6 +91,28 @@ CASES = [
        '<ParameterList name="QuasiStatic"><Parameter name="Time Steps" type="string" value="0.0 0.5 one"/></ParameterList>'),
       (r'<Parameter name="Initial Time" type="double" value="0.0"/>', '')],
      ["Time Steps", "one"]),
+    # Issue 20: the linear solver list's choices are checked when the deck is read, not at the first solve.
+    ("Krylov method other than GMRES",
+     [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<ParameterList name="NOXQuasiStatic"><Parameter name="Number of Load Steps" type="int" value="2"/>'
+       '<ParameterList name="Direction"><ParameterList name="Newton"><ParameterList name="Linear Solver">'
+       '<Parameter name="Aztec Solver" type="string" value="CG"/></ParameterList></ParameterList></ParameterList>'
+       '</ParameterList>')],
+     ["Linear Solver", "Aztec Solver", "CG"]),
+    ("unknown preconditioner",
+     [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<ParameterList name="NOXQuasiStatic"><Parameter name="Number of Load Steps" type="int" value="2"/>'
+       '<ParameterList name="Direction"><ParameterList name="Newton"><ParameterList name="Linear Solver">'
+       '<Parameter name="Preconditioner" type="string" value="AMG"/></ParameterList></ParameterList></ParameterList>'
+       '</ParameterList>')],
+     ["Linear Solver", "Preconditioner", "AMG"]),
+    ("ML's parameter sub-list",
+     [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<ParameterList name="NOXQuasiStatic"><Parameter name="Number of Load Steps" type="int" value="2"/>'
+       '<ParameterList name="Direction"><ParameterList name="Newton"><ParameterList name="Linear Solver">'
+       '<ParameterList name="ML"><Parameter name="max levels" type="int" value="3"/></ParameterList>'
+       '</ParameterList></ParameterList></ParameterList></ParameterList>')],
+     ["Linear Solver", "'ML'", "MueLu"]),
     ("unsupported Peridigm output variable",
      [('<ParameterList name="Output Variables">', '<ParameterList name="Output Variables">\n      <Parameter name="Strain_Energy" type="bool" value="true"/>')],
      ["Strain_Energy", "not supported"]),
