@@ -1,7 +1,6 @@
 // GhostTransfers on Tpetra (issue 20): one point map per width, each point's ncomp values as global entries
 // ncomp * gid + c, with an Import (owned to overlap, rank 0) and an Export (overlap to owned) per width. The
 // vectors are views of the caller's arrays (wrap), so nothing is copied beyond what the transfer moves.
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
@@ -9,9 +8,8 @@
 
 #include <map>
 
-#include "parallel/CommunicatorImpl.hpp"
 #include "parallel/GhostTransfers.hpp"
-#include "parallel/KokkosRuntime.hpp"
+#include "parallel/TpetraSupport.hpp"
 
 namespace pf {
 
@@ -30,21 +28,14 @@ Teuchos::RCP<const Map> pointMap(const std::vector<int>& gids, std::size_t count
   return Teuchos::rcp(new Map(any, Teuchos::ArrayView<const GO>(entries.data(), entries.size()), 0, comm));
 }
 
-// A Tpetra vector on the caller's array (no copy): an unmanaged host view in both halves of the dual view (the
-// Serial node's device memory is host memory, so Tpetra's syncs between them copy nothing).
-Vec wrap(const Teuchos::RCP<const Map>& map, const double* data) {
-  const std::size_t n = map->getNodeNumElements();
-  Vec::dual_view_type::t_dev d(const_cast<double*>(data), n, 1);
-  Vec::dual_view_type::t_host h(const_cast<double*>(data), n, 1);
-  return Vec(map, Vec::dual_view_type(d, h));
-}
+Vec wrap(const Teuchos::RCP<const Map>& map, const double* data) { return hostView<Vec>(map, data); }
 
 class TpetraTransfers final : public GhostTransfers {
  public:
   TpetraTransfers(const Communicator& comm, int numOwned, const std::vector<int>& gids, int numGlobal)
       : numOwned_(numOwned), gids_(gids), numGlobal_(numGlobal), rank_(comm.rank()) {
     ensureKokkos();
-    comm_ = Teuchos::rcp(new Teuchos::MpiComm<int>(comm.impl().mpi));
+    comm_ = teuchosComm(comm);
     width(1), width(3);  // the common widths up front (every rank builds them in the constructor)
   }
 

@@ -5,7 +5,6 @@
 #include <BelosTpetraAdapter.hpp>
 #include <Ifpack2_Factory.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
@@ -17,8 +16,7 @@
 #include "PairStiffness.hpp"
 #include "NoxParameters.hpp"
 #include "model/Model.hpp"
-#include "parallel/CommunicatorImpl.hpp"
-#include "parallel/KokkosRuntime.hpp"
+#include "parallel/TpetraSupport.hpp"
 
 namespace pf {
 namespace {
@@ -54,12 +52,8 @@ class ActionOperator : public OP {
   mutable std::vector<double> tmp_;
 };
 
-// A vector of the map viewing the caller's array (unmanaged host view; the Serial node's device is the host).
 Teuchos::RCP<MV> wrap(const Teuchos::RCP<const Map>& map, const double* data) {
-  const std::size_t n = map->getNodeNumElements();
-  MV::dual_view_type::t_dev d(const_cast<double*>(data), n, 1);
-  MV::dual_view_type::t_host h(const_cast<double*>(data), n, 1);
-  return Teuchos::rcp(new MV(map, MV::dual_view_type(d, h)));
+  return Teuchos::rcp(new MV(hostView<MV>(map, data)));  // a Tpetra copy is a shallow one: still the array
 }
 
 // MueLu's smoothed aggregation with ML's settings that Periforge measured (3 dofs per point, one symmetric
@@ -127,7 +121,7 @@ KrylovSolver::KrylovSolver(const Model& model, double precBondRadius, const std:
   impl_->where = std::move(where);
   ensureKokkos();
   const PairRows rows = pairStiffnessRows(model, precBondRadius, shift);
-  auto comm = Teuchos::rcp(new Teuchos::MpiComm<int>(model.layout().comm().impl().mpi));
+  const auto comm = teuchosComm(model.layout().comm());
   std::vector<GO> gids(rows.row.begin(), rows.row.end());
   const Tpetra::global_size_t any = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   impl_->map = Teuchos::rcp(new Map(any, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0, comm));
@@ -155,8 +149,8 @@ Teuchos::RCP<const Thyra::VectorSpaceBase<double>> KrylovSolver::space() const {
 KrylovOutcome KrylovSolver::solve(const TangentAction& J, const double* rhs, double* dx,
                                   Teuchos::ParameterList& linearSolver) {
   Impl& s = *impl_;
-  const LinearSolverChoice choice = linearSolverChoice(linearSolver, s.where);
-  if (!s.precBuilt) {
+  if (!s.precBuilt) {  // the deck's choice was validated when it was read (checkLinearSolver)
+    const LinearSolverChoice choice = linearSolverChoice(linearSolver, s.where);
     if (choice.preconditioner == LinearSolverChoice::Preconditioner::MueLu)
       s.prec = buildMueLu(s.matrix, linearSolver);
     else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)

@@ -3,7 +3,6 @@
 #include <NOX.H>
 
 #include <algorithm>
-#include <cmath>
 
 #include "BreakRounds.hpp"
 #include "KrylovSolver.hpp"

@@ -24,8 +24,7 @@ bool StepResidual::evaluate(const double* x, double* F, bool accepted) {
   std::copy(x, x + n, u_.begin());
   try {
     model_.internalForce(u_.data(), f_.data());
-  } catch (const ConstitutiveFailure& e) {
-    failure_ = e.what();
+  } catch (const ConstitutiveFailure&) {
     return false;
   }
   if (inertia_)

@@ -4,7 +4,6 @@
 // ones, and its Jacobian's action. s is the preconditioner's mean free diagonal, so both kinds of rows are
 // alike in scale; c = 0 without inertia.
 #include <functional>
-#include <string>
 #include <vector>
 
 #include "LoadStepping.hpp"
@@ -18,11 +17,10 @@ class StepResidual {
  public:
   StepResidual(Model& model, double t, std::vector<double> xbar, double scale, const Inertia* inertia);
   // F at x. accepted: this is an iterate's residual (NOX's own evaluation, not a perturbed one), whose
-  // norms become norms(). False when a material cannot update (failure() says why).
+  // norms become norms(). False when a material cannot update.
   bool evaluate(const double* x, double* F, bool accepted);
   // Force and load measures at the last accepted evaluation; the inertial force -c (x - u~) counts as load.
   ResidualNorms norms() const;
-  const std::string& failure() const { return failure_; }
   // Called with the norms of every accepted evaluation (the inexact-Newton tolerance hook).
   void setOnResidual(std::function<void(const ResidualNorms&)> f) { onResidual_ = std::move(f); }
 
@@ -32,7 +30,6 @@ class StepResidual {
   double scale_;
   const Inertia* inertia_;
   std::vector<double> u_, f_, fAccepted_, b_, load_, loadAccepted_;  // load: b - c (x - u~)
-  std::string failure_;
   std::function<void(const ResidualNorms&)> onResidual_;
 };
 
