@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/InputError.hpp"
+#include "parallel/ChunkedGather.hpp"
 #include "parallel/Collective.hpp"
 
 namespace pf {
@@ -82,6 +83,20 @@ void restoreHistory(const CheckpointData& data, const GlobalBondOrder& order, Mo
   }
 }
 
+// Collective: the sum of every point's reference coordinates taken in cloud order on rank 0 (in chunks,
+// parallel/ChunkedGather.hpp), so it is the same number at any rank count; every rank gets it.
+double coordinateSum(const Model& model) {
+  const DistributedLayout& layout = model.layout();
+  const std::vector<double>& x = model.coordinates();
+  double sum = 0.0;
+  const ChunkedGather gather(layout.comm(), layout.gids().data(), layout.numOwned(), layout.numGlobal());
+  gather.gather({{[&](int i, double* out) { std::copy(&x[3 * i], &x[3 * i] + 3, out); }, 3}},
+                [&](int, int count, const std::vector<const double*>& values) {
+                  for (int k = 0; k < 3 * count; ++k) sum += values[0][k];
+                });
+  return layout.sum(sum);  // rank 0's sum plus zeros: exact
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> runFingerprint(const Deck& deck, const Problem& problem) {
@@ -89,9 +104,7 @@ std::vector<std::pair<std::string, std::string>> runFingerprint(const Deck& deck
   std::vector<std::pair<std::string, std::string>> items;
   items.emplace_back("points", number(model.layout().numGlobal()));
   items.emplace_back("bonds", number(model.sum(static_cast<double>(model.layout().family().numBonds()))));
-  double coordinates = 0.0;  // the whole cloud in cloud order: the same sum at any rank count
-  for (double x : problem.cloud.x) coordinates += x;
-  items.emplace_back("coordinate sum", number(coordinates));
+  items.emplace_back("coordinate sum", number(coordinateSum(model)));
   for (const MaterialSpec& m : deck.materials)
     items.emplace_back("material '" + m.name + "'", "Material Model = " + m.entry->model + "; " + valuesText(m.values));
   for (const BlockModel& b : model.blocks())

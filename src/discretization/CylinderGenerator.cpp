@@ -44,12 +44,12 @@ std::vector<std::array<double, 2>> cylinderSection(const DiscretizationSpec& d, 
   return out;
 }
 
-PointCloud cylinder(const DiscretizationSpec& d, const std::string& inputFile) {
+void cylinder(const DiscretizationSpec& d, const std::string& inputFile, PointSink& sink) {
   const double dx = d.spacing;
   const long layers = cylinderLayers(d, inputFile);
   const std::vector<std::array<double, 2>> section = cylinderSection(d, inputFile);
   const int ax = d.cylinderAxis, p = (ax + 1) % 3, q = (ax + 2) % 3;  // (p, q, ax) right-handed
-  PointCloud c;
+  PointCloud& c = sink.cloud;
   c.spacing = dx;
   c.cell = {dx, dx, dx};
   const double vol = dx * dx * dx;
@@ -59,11 +59,8 @@ PointCloud cylinder(const DiscretizationSpec& d, const std::string& inputFile) {
       x[ax] += (k + 0.5) * dx;
       x[p] += s[0];
       x[q] += s[1];
-      c.x.insert(c.x.end(), x.begin(), x.end());
-      c.volume.push_back(vol);
-      c.block.push_back(1);
+      sink.push(x[0], x[1], x[2], vol, 1);
     }
-  return c;
 }
 
 }  // namespace pf

@@ -15,6 +15,7 @@ namespace pf {
 std::vector<std::array<double, 2>> cylinderSection(const DiscretizationSpec& d, const std::string& inputFile);
 long cylinderLayers(const DiscretizationSpec& d, const std::string& inputFile);
 
-PointCloud cylinder(const DiscretizationSpec& d, const std::string& inputFile);
+// The points in cloud order into sink (its cloud gets the grid metadata).
+void cylinder(const DiscretizationSpec& d, const std::string& inputFile, PointSink& sink);
 
 }  // namespace pf

@@ -5,10 +5,10 @@
 #include <climits>
 #include <cmath>
 #include <fstream>
+#include <stdexcept>
 #include <sstream>
 
 #include "CylinderGenerator.hpp"
-#include "DuplicatePoints.hpp"
 #include "core/InputError.hpp"
 #include "core/Words.hpp"
 
@@ -34,46 +34,34 @@ void pushPoint(PointCloud& c, double x, double y, double z, double v, int block)
   c.block.push_back(block);
 }
 
-PointCloud quickGrid(const DiscretizationSpec& d) {
+}  // namespace
+
+bool PointSink::push(double x, double y, double z, double v, int block) {
+  const bool keep = next >= lo && next < hi;
+  if (keep) {
+    pushPoint(cloud, x, y, z, v, block);
+    cloud.gid.push_back(static_cast<int>(next));
+  }
+  ++next;
+  return keep;
+}
+
+namespace {
+
+void quickGrid(const DiscretizationSpec& d, PointSink& sink) {
+  PointCloud& c = sink.cloud;
   std::array<double, 3> o = d.origin, h{};
   std::array<int, 3> n = d.count;
   for (int a = 0; a < 3; ++a) h[a] = d.length[a] / n[a];
-  PointCloud c;
   const double vol = h[0] * h[1] * h[2];
-  const std::size_t total = static_cast<std::size_t>(n[0]) * n[1] * n[2];
-  c.x.reserve(3 * total);
-  c.volume.reserve(total);
-  c.block.reserve(total);
   // x fastest, then y, then z: Peridigm's global ids (index + 1) and node sets depend on this order.
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i)
-        pushPoint(c, o[0] + (i + 0.5) * h[0], o[1] + (j + 0.5) * h[1], o[2] + (k + 0.5) * h[2], vol, 1);
+        sink.push(o[0] + (i + 0.5) * h[0], o[1] + (j + 0.5) * h[1], o[2] + (k + 0.5) * h[2], vol, 1);
   const double tol = 1e-12 * std::max({h[0], h[1], h[2]});
   c.spacing = (std::fabs(h[0] - h[1]) <= tol && std::fabs(h[0] - h[2]) <= tol) ? h[0] : 0.0;
   c.cell = h;
-  return c;
-}
-
-PointCloud textFile(const DiscretizationSpec& d, const std::string& file) {
-  const std::string path = "Discretization/Input Mesh File";
-  const std::string& full = d.meshFile;
-  PointCloud c;
-  forEachDataLine(full, file, path, "mesh", [&](const std::string& line, const std::string& where) {
-    std::istringstream ss(line);
-    double x, y, z, v;
-    long b;
-    std::string extra;
-    if (!(ss >> x >> y >> z >> b >> v) || (ss >> extra))
-      fail(file, path, where + ": expected 'x y z block_id volume', got '" + printable(line) + "'");
-    if (b < 1 || b > INT_MAX)  // (an id past an int would wrap into another block's)
-      fail(file, path, where + ": block_id must be a positive integer up to 2147483647 (got " + std::to_string(b) + ")");
-    if (!(v > 0.0) || !std::isfinite(v)) fail(file, path, where + ": volume must be positive (got " + num(v) + ")");
-    if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) fail(file, path, where + ": non-finite coordinate");
-    pushPoint(c, x, y, z, v, static_cast<int>(b));
-  });
-  if (c.size() == 0) fail(file, path, "mesh file '" + full + "' holds no points");
-  return c;
 }
 
 std::vector<double> gridLine(double origin, double length, double dx, bool nodes, const std::string& file,
@@ -102,7 +90,7 @@ bool insideAnyHole(const std::vector<HoleSpec>& holes, double x, double y, doubl
   return false;
 }
 
-PointCloud generator(const DiscretizationSpec& d, const std::string& file) {
+void generator(const DiscretizationSpec& d, const std::string& file, PointSink& sink) {
   const bool box = d.type == DiscretizationSpec::Type::BoxWithHoles;
   const double dx = d.spacing;
   const bool nodes = d.gridNodes;
@@ -112,7 +100,7 @@ PointCloud generator(const DiscretizationSpec& d, const std::string& file) {
     line[a] = gridLine(d.origin[a], d.length[a], dx, nodes, file, std::string(ax[a]) + " Length");
   if (!box) line[2] = {0.0};
 
-  PointCloud c;
+  PointCloud& c = sink.cloud;
   c.spacing = dx;
   c.cell = {dx, dx, box ? dx : 0.0};
   double vol = dx * dx * dx;
@@ -129,8 +117,8 @@ PointCloud generator(const DiscretizationSpec& d, const std::string& file) {
       for (double y : ys)
         for (double x : xs) {
           if (insideAnyHole(holes, x, y, z)) continue;
-          if (members) members->push_back(c.size());
-          pushPoint(c, x, y, z, vol, 1);
+          const long long id = sink.next;
+          if (sink.push(x, y, z, vol, 1) && members) members->push_back(static_cast<int>(id));
         }
   };
   addBlock(line[0], line[1], line[2], nullptr);
@@ -161,7 +149,6 @@ PointCloud generator(const DiscretizationSpec& d, const std::string& file) {
       addBlock(l[0], l[1], l[2], &members);
     }
   }
-  return c;
 }
 
 }  // namespace
@@ -182,20 +169,117 @@ void forEachDataLine(const std::string& full, const std::string& inputFile, cons
   }
 }
 
-PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& inputFile) {
-  using T = DiscretizationSpec::Type;
+namespace {
+
+// One mesh line "x y z block_id volume" onto the cloud; where: "file:line" for messages.
+void parseMeshLine(const std::string& line, const std::string& where, const std::string& file, PointCloud& c) {
+  const std::string path = "Discretization/Input Mesh File";
+  std::istringstream ss(line);
+  double x, y, z, v;
+  long b;
+  std::string extra;
+  if (!(ss >> x >> y >> z >> b >> v) || (ss >> extra))
+    fail(file, path, where + ": expected 'x y z block_id volume', got '" + printable(line) + "'");
+  if (b < 1 || b > INT_MAX)  // (an id past an int would wrap into another block's)
+    fail(file, path, where + ": block_id must be a positive integer up to 2147483647 (got " + std::to_string(b) + ")");
+  if (!(v > 0.0) || !std::isfinite(v)) fail(file, path, where + ": volume must be positive (got " + num(v) + ")");
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) fail(file, path, where + ": non-finite coordinate");
+  pushPoint(c, x, y, z, v, static_cast<int>(b));
+}
+
+std::ifstream openMesh(const DiscretizationSpec& d, const std::string& inputFile) {
+  std::ifstream in(d.meshFile, std::ios::binary);
+  if (!in) fail(inputFile, "Discretization/Input Mesh File", "cannot open mesh file '" + d.meshFile + "'");
+  return in;
+}
+
+// The first line start at or after byte b (b itself if b is 0 or follows a newline).
+long long lineStartFrom(std::ifstream& in, long long b, long long size) {
+  if (b <= 0) return 0;
+  if (b >= size) return size;
+  in.clear();
+  in.seekg(b - 1);
+  char ch;
+  while (in.get(ch))
+    if (ch == '\n') return static_cast<long long>(in.tellg());
+  return size;
+}
+
+}  // namespace
+
+MeshFileRange meshFileRange(const DiscretizationSpec& d, const std::string& inputFile, int part, int parts) {
+  std::ifstream in = openMesh(d, inputFile);
+  in.seekg(0, std::ios::end);
+  const long long size = static_cast<long long>(in.tellg());
+  MeshFileRange r;
+  r.begin = lineStartFrom(in, size * part / parts, size);
+  r.end = lineStartFrom(in, size * (part + 1) / parts, size);
+  in.clear();
+  in.seekg(r.begin);
+  std::vector<char> buf(1 << 16);
+  for (long long left = r.end - r.begin; left > 0;) {
+    in.read(buf.data(), static_cast<std::streamsize>(std::min<long long>(left, buf.size())));
+    const std::streamsize got = in.gcount();
+    if (got <= 0) break;
+    r.lines += std::count(buf.begin(), buf.begin() + got, '\n');
+    left -= got;
+  }
+  return r;
+}
+
+PointCloud readMeshRange(const DiscretizationSpec& d, const std::string& inputFile, const MeshFileRange& range,
+                         long long firstLine) {
+  std::ifstream in = openMesh(d, inputFile);
+  in.seekg(range.begin);
   PointCloud c;
-  switch (d.type) {
-    case T::QuickGrid: c = quickGrid(d); break;
-    case T::TextFile: c = textFile(d, inputFile); break;
-    case T::RectangleWithHoles:
-    case T::BoxWithHoles: c = generator(d, inputFile); break;
-    case T::Cylinder: c = cylinder(d, inputFile); break;
+  std::string line;
+  long long lineNo = firstLine;
+  while (static_cast<long long>(in.tellg()) < range.end && std::getline(in, line)) {
+    ++lineNo;
+    const std::size_t hash = line.find('#');
+    if (hash != std::string::npos) line.erase(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    parseMeshLine(line, d.meshFile + ":" + std::to_string(lineNo), inputFile, c);
   }
   c.influence = d.influence;
   c.partialVolume = d.partialVolume;
-  if (c.size() == 0) fail(inputFile, "Discretization", "the discretization has no points (holes cover everything)");
-  requireDistinctPoints(c, inputFile);
+  return c;
+}
+
+PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& inputFile, int part, int parts) {
+  using T = DiscretizationSpec::Type;
+  if (d.type == T::TextFile) {
+    if (parts != 1) throw std::logic_error("buildDiscretization: a Text File slab needs meshFileRange/readMeshRange");
+    PointCloud c = readMeshRange(d, inputFile, meshFileRange(d, inputFile, 0, 1), 0);
+    if (c.size() == 0) fail(inputFile, "Discretization/Input Mesh File", "mesh file '" + d.meshFile + "' holds no points");
+    c.numGlobal = c.size();
+    c.gid.resize(c.size());
+    for (int i = 0; i < c.size(); ++i) c.gid[i] = i;
+    return c;
+  }
+  // Two passes of the generator: the first counts the cloud, the second keeps this part's slab of it.
+  auto run = [&](PointSink& sink) {
+    switch (d.type) {
+      case T::QuickGrid: quickGrid(d, sink); break;
+      case T::RectangleWithHoles:
+      case T::BoxWithHoles: generator(d, inputFile, sink); break;
+      case T::Cylinder: cylinder(d, inputFile, sink); break;
+      case T::TextFile: break;
+    }
+  };
+  PointCloud counted;
+  PointSink count{counted, 0, 0};
+  run(count);
+  const long long n = count.next;
+  if (n == 0) fail(inputFile, "Discretization", "the discretization has no points (holes cover everything)");
+  if (n > INT_MAX) fail(inputFile, "Discretization", "the discretization has " + std::to_string(n) +
+                                                         " points, more than 2147483647 (ids are ints)");
+  PointCloud c;
+  PointSink keep{c, n * part / parts, n * (part + 1) / parts};
+  run(keep);
+  c.numGlobal = n;
+  c.influence = d.influence;
+  c.partialVolume = d.partialVolume;
   return c;
 }
 

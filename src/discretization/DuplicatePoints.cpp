@@ -5,17 +5,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "Discretization.hpp"
-#include "core/InputError.hpp"
-
 namespace pf {
 
-double duplicateTolerance(const PointCloud& cloud) {
-  if (cloud.spacing > 0) return 1e-9 * cloud.spacing;
-  double vmin = 0.0;
-  for (double v : cloud.volume)
-    if (v > 0 && (vmin == 0.0 || v < vmin)) vmin = v;
-  return 1e-9 * std::cbrt(vmin);
+double duplicateTolerance(double spacing, double smallestVolume) {
+  return spacing > 0 ? 1e-9 * spacing : 1e-9 * std::cbrt(smallestVolume);
 }
 
 namespace {
@@ -73,14 +66,11 @@ std::pair<int, int> findDuplicatePoints(const std::vector<double>& x, double tol
   return {-1, -1};
 }
 
-void requireDistinctPoints(const PointCloud& cloud, const std::string& inputFile) {
-  const std::pair<int, int> d = findDuplicatePoints(cloud.x, duplicateTolerance(cloud));
-  if (d.first < 0) return;
-  const double* p = &cloud.x[3 * d.first];
+std::string duplicateMessage(const std::string& inputFile, int i, int j, const double* p) {
   char msg[256];
-  std::snprintf(msg, sizeof msg, ": Discretization: points %d and %d have the same coordinates (%g, %g, %g)",
-                d.first + 1, d.second + 1, p[0], p[1], p[2]);
-  throw InputError(inputFile + msg);
+  std::snprintf(msg, sizeof msg, ": Discretization: points %d and %d have the same coordinates (%g, %g, %g)", i + 1,
+                j + 1, p[0], p[1], p[2]);
+  return inputFile + msg;
 }
 
 }  // namespace pf

@@ -7,17 +7,15 @@
 
 namespace pf {
 
-struct PointCloud;
-
-// The length below which two points count as one: 1e-9 x the grid spacing when uniform, else 1e-9 x the
-// smallest nonzero point size (cube root of the volume), the cloud's smallest distance scale.
-double duplicateTolerance(const PointCloud& cloud);
+// The length below which two points count as one: 1e-9 x the grid spacing when uniform (spacing > 0), else
+// 1e-9 x the smallest point size (cube root of the cloud's smallest volume), its smallest distance scale.
+double duplicateTolerance(double spacing, double smallestVolume);
 
 // {i, j} (0-based, i < j, i the smallest id that has a duplicate) of two points within tol of each other
 // in every coordinate; {-1, -1} if none. Deterministic: every rank finds the same pair.
 std::pair<int, int> findDuplicatePoints(const std::vector<double>& x, double tol);
 
-// InputError "inputFile: Discretization: points i and j have the same coordinates (x, y, z)" if any.
-void requireDistinctPoints(const PointCloud& cloud, const std::string& inputFile);
+// "inputFile: Discretization: points i+1 and j+1 have the same coordinates (x, y, z)" (i, j 0-based).
+std::string duplicateMessage(const std::string& inputFile, int i, int j, const double* x);
 
 }  // namespace pf

@@ -23,8 +23,9 @@ void warn(const std::string& file, const std::string& path, const std::string& m
   pf::warn(file + ": " + path + ": " + msg);  // qualified: this 3-argument warn hides core's
 }
 
-// Ids are 1-based global ids in the order of the cloud (Peridigm's convention).
-std::vector<int> idsToIndices(const std::vector<std::string>& words, int n, const std::string& file,
+// Ids are 1-based global ids in the order of the cloud (Peridigm's convention); every id of the cloud
+// is returned, held here or not (resolveNodeSets keeps the held ones).
+std::vector<int> idsToIndices(const std::vector<std::string>& words, long long n, const std::string& file,
                               const std::string& path, const std::string& where, int& skipped) {
   std::vector<int> out;
   out.reserve(words.size());
@@ -50,7 +51,7 @@ std::vector<int> idsToIndices(const std::vector<std::string>& words, int n, cons
   return out;
 }
 
-std::vector<int> region(const NodeSetSpec& r, const PointCloud& c) {
+std::vector<int> region(const NodeSetSpec& r, const PointCloud& c, const CloudReductions& reduce) {
   std::vector<int> out;
   const int n = c.size();
   if (!r.face.empty()) {
@@ -65,17 +66,21 @@ std::vector<int> region(const NodeSetSpec& r, const PointCloud& c) {
       lo = std::min(lo, v);
       hi = std::max(hi, v);
     }
+    ext = low ? -reduce.max(-ext) : reduce.max(ext);
+    lo = -reduce.max(-lo);
+    hi = reduce.max(hi);
     // Default: half a grid spacing catches one row of a lattice and nothing else.
     double tol = r.tolerance;
     if (tol <= 0.0) tol = c.spacing > 0.0 ? 0.5 * c.spacing : 1e-9 * std::max(1.0, hi - lo);
     for (int i = 0; i < n; ++i)
-      if (std::fabs(c.x[3 * i + a] - ext) <= tol) out.push_back(i);
+      if (std::fabs(c.x[3 * i + a] - ext) <= tol) out.push_back(c.gid[i]);
     return out;
   }
   const std::array<double, 3>& lo = r.lo;
   const std::array<double, 3>& hi = r.hi;
   double scale = 0.0;
   for (int i = 0; i < 3 * n; ++i) scale = std::max(scale, std::fabs(c.x[i]));
+  scale = reduce.max(scale);
   const double slack = 1e-12 * std::max(1.0, scale);  // bounds are inclusive; round-off must not exclude a row
   for (int i = 0; i < n; ++i) {
     bool in = true;
@@ -83,7 +88,7 @@ std::vector<int> region(const NodeSetSpec& r, const PointCloud& c) {
       const double v = c.x[3 * i + a];
       in = v >= lo[a] - slack && v <= hi[a] + slack;
     }
-    if (in) out.push_back(i);
+    if (in) out.push_back(c.gid[i]);
   }
   return out;
 }
@@ -91,11 +96,17 @@ std::vector<int> region(const NodeSetSpec& r, const PointCloud& c) {
 }  // namespace
 
 std::map<std::string, std::vector<int>> resolveNodeSets(const std::vector<NodeSetSpec>& nodeSets,
-                                                        const PointCloud& cloud, const std::string& inputFile) {
+                                                        const PointCloud& cloud, const std::string& inputFile,
+                                                        const CloudReductions& reduce) {
   std::map<std::string, std::vector<int>> sets = cloud.generatedNodeSets;
-  std::vector<int>& all = sets["All"];
-  all.resize(cloud.size());
-  for (int i = 0; i < cloud.size(); ++i) all[i] = i;
+  sets["All"] = cloud.gid;
+  // The listed ids this rank holds (cloud.gid is ascending).
+  auto held = [&](std::vector<int> ids) {
+    ids.erase(std::remove_if(ids.begin(), ids.end(),
+                             [&](int g) { return !std::binary_search(cloud.gid.begin(), cloud.gid.end(), g); }),
+              ids.end());
+    return ids;
+  };
 
   for (const NodeSetSpec& spec : nodeSets) {
     const std::string& name = spec.name;
@@ -103,12 +114,13 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const std::vector<NodeSe
     std::vector<int> ids;
     int skipped = 0;  // ids outside the discretization, dropped with a warning
     if (spec.kind == NodeSetSpec::Kind::Region) {
-      ids = region(spec, cloud);
+      ids = region(spec, cloud, reduce);
     } else if (spec.kind == NodeSetSpec::Kind::Ids) {
-      ids = idsToIndices(splitWords(spec.text), cloud.size(), inputFile, path, "", skipped);
+      ids = held(idsToIndices(splitWords(spec.text), cloud.numGlobal, inputFile, path, "", skipped));
     } else {
       forEachDataLine(spec.text, inputFile, path, "node set", [&](const std::string& line, const std::string& where) {
-        const std::vector<int> more = idsToIndices(splitWords(line), cloud.size(), inputFile, path, where + ": ", skipped);
+        const std::vector<int> more =
+            held(idsToIndices(splitWords(line), cloud.numGlobal, inputFile, path, where + ": ", skipped));
         ids.insert(ids.end(), more.begin(), more.end());
       });
     }
@@ -118,12 +130,13 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const std::vector<NodeSe
     ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
     // A set emptied by dropped ids is kept (Peridigm's conditions on it then act on no node); one that lists
     // nothing at all is still an error.
-    if (ids.empty() && skipped == 0) fail(inputFile, path, "node set '" + name + "' is empty");
-    if (ids.empty()) warn(inputFile, path, "node set '" + name + "' holds no node of the discretization");
+    const bool empty = reduce.sum(static_cast<double>(ids.size())) == 0;
+    if (empty && skipped == 0) fail(inputFile, path, "node set '" + name + "' is empty");
+    if (empty) warn(inputFile, path, "node set '" + name + "' holds no node of the discretization");
     sets[name] = std::move(ids);
   }
   for (const auto& [name, ids] : cloud.generatedNodeSets)
-    if (ids.empty()) fail(inputFile, "Discretization", "generated node set '" + name + "' is empty");
+    if (reduce.sum(static_cast<double>(ids.size())) == 0) fail(inputFile, "Discretization", "generated node set '" + name + "' is empty");
   return sets;
 }
 

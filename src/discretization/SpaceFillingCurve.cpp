@@ -43,6 +43,11 @@ std::vector<std::uint64_t> hilbertKeys(const std::vector<double>& coords) {
       lo[d] = std::min(lo[d], coords[3 * p + d]);
       hi[d] = std::max(hi[d], coords[3 * p + d]);
     }
+  return hilbertKeys(coords, lo, hi);
+}
+
+std::vector<std::uint64_t> hilbertKeys(const std::vector<double>& coords, const double* lo, const double* hi) {
+  const std::size_t n = coords.size() / 3;
   double scale = 0;
   for (int d = 0; d < 3; ++d) scale = std::max(scale, hi[d] - lo[d]);
   scale = scale > 0 ? static_cast<double>((1u << kHilbertBits) - 1) / scale : 0.0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numeric>
 #include <set>
 #include <unordered_map>
 
@@ -10,8 +11,11 @@
 #include "core/Log.hpp"
 #include "core/MaterialEntry.hpp"
 #include "discretization/NodeSets.hpp"
+#include "model/DistributedCloud.hpp"
 #include "model/PressureLoad.hpp"
+#include "parallel/Collective.hpp"
 #include "parallel/Partition.hpp"
+#include "parallel/PointExchange.hpp"
 
 namespace pf {
 namespace {
@@ -27,7 +31,7 @@ struct BlockSpec {
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
 // cloud that no other group names (none left: the group is unused).
-std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
+std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloudBlocks) {
   std::map<int, BlockSpec> blocks;
   std::map<std::string, std::shared_ptr<const Material>> built;
   auto materialOf = [&](const std::string& name) {
@@ -59,7 +63,7 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const PointCloud& cloud) {
     for (int id : g.blockIds) blocks[id] = specOf(g, id);
   for (const BlockGroupSpec& g : deck.blocks) {
     if (!g.isDefault) continue;
-    for (int id : std::set<int>(cloud.block.begin(), cloud.block.end()))
+    for (int id : cloudBlocks)
       if (!blocks.count(id)) blocks[id] = specOf(g, id);
   }
   return blocks;
@@ -113,10 +117,13 @@ void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, 
 
 // A Text File mesh is 3D unless it is flat (every z = 0) and every block's material is 2D: then it is the
 // 2D discretization those materials need (the volumes in the file already hold the thickness).
-void adoptFlatTextMesh(const DiscretizationSpec& spec, PointCloud& cloud, const std::map<int, BlockSpec>& blocks) {
+void adoptFlatTextMesh(const DiscretizationSpec& spec, PointCloud& cloud, const std::map<int, BlockSpec>& blocks,
+                       const Communicator& comm) {
   if (spec.type != DiscretizationSpec::Type::TextFile || cloud.planar) return;
+  double raised = 0.0;
   for (int p = 0; p < cloud.size(); ++p)
-    if (cloud.x[3 * p + 2] != 0.0) return;
+    if (cloud.x[3 * p + 2] != 0.0) raised = 1.0;
+  if (comm.max(raised) > 0.0) return;
   for (const auto& kv : blocks)
     if (!isPlanar(kv.second.material->dimension())) return;
   cloud.planar = true;
@@ -162,50 +169,62 @@ void addRigidWalls(const Deck& deck, Problem& pb, const std::unordered_map<int, 
   }
 }
 
+// Every point needs a block (the lowest rank's first such point is the cloud's first); planar materials
+// need a planar cloud and vice versa.
+void requireBlocksAndDimension(const Deck& deck, PointCloud& slab, const std::map<int, BlockSpec>& blocks,
+                               const Communicator& comm) {
+  const std::string& inputFile = deck.file;
+  collectively(comm, [&] {
+    for (int p = 0; p < slab.size(); ++p)
+      if (!blocks.count(slab.block[p]))
+        throw InputError(inputFile + ": Blocks: the discretization has points in block_" + std::to_string(slab.block[p]) +
+                         " but no entry of Blocks names it");
+  });
+  adoptFlatTextMesh(deck.discretization, slab, blocks, comm);
+  for (const auto& kv : blocks) {
+    const bool planarMaterial = isPlanar(kv.second.material->dimension());
+    if (planarMaterial && !slab.planar)
+      throw InputError(inputFile + ": Materials/" + kv.second.materialName +
+                       ": a 2D (Plane Stress / Plane Strain) material needs a 2D discretization (all z = 0)");
+    if (!planarMaterial && slab.planar)
+      throw InputError(inputFile + ": Materials/" + kv.second.materialName +
+                       ": the discretization is 2D; set 'Plane Stress' or 'Plane Strain' and 'Thickness'");
+  }
+}
+
 }  // namespace
 
 Problem buildProblem(const Deck& deck, const Communicator& comm) {
   Problem pb;
   const std::string& inputFile = deck.file;
-  pb.cloud = buildDiscretization(deck.discretization, inputFile);
-  const PointCloud& cloud = pb.cloud;
-  if (cloud.size() == 0) throw InputError(inputFile + ": Discretization produced no points");
-  requireHorizonsReachNeighbours(deck, cloud);
-  const std::map<int, BlockSpec> blocks = blockSpecs(deck, cloud);
+  PointCloud slab = buildSlab(deck.discretization, inputFile, comm);
+  requireHorizonsReachNeighbours(deck, slab);
+  const std::map<int, BlockSpec> blocks = blockSpecs(deck, blockIdsOf(slab, comm));
 
-  // Every point needs a block; planar materials need a planar cloud and vice versa.
-  std::vector<double> horizon(cloud.size());
-  for (int p = 0; p < cloud.size(); ++p) {
-    auto it = blocks.find(cloud.block[p]);
-    if (it == blocks.end())
-      throw InputError(inputFile + ": Blocks: the discretization has points in block_" + std::to_string(cloud.block[p]) +
-                       " but no entry of Blocks names it");
-    horizon[p] = it->second.horizon;
-  }
-  adoptFlatTextMesh(deck.discretization, pb.cloud, blocks);
-  for (const auto& kv : blocks) {
-    const bool planarMaterial = isPlanar(kv.second.material->dimension());
-    if (planarMaterial && !cloud.planar)
-      throw InputError(inputFile + ": Materials/" + kv.second.materialName +
-                       ": a 2D (Plane Stress / Plane Strain) material needs a 2D discretization (all z = 0)");
-    if (!planarMaterial && cloud.planar)
-      throw InputError(inputFile + ": Materials/" + kv.second.materialName +
-                       ": the discretization is 2D; set 'Plane Stress' or 'Plane Strain' and 'Thickness'");
-  }
-
+  requireBlocksAndDimension(deck, slab, blocks, comm);
   requireEqualHorizonsForGatherForms(blocks, inputFile);
 
-  std::vector<int> owner = partitionRcb(cloud.x, comm);
-  const std::array<double, 3> box = quickGridBox(deck.discretization, horizon.front());  // one block: one horizon
-  auto layout = std::make_unique<DistributedLayout>(comm, cloud.x, owner, horizon, cloud.block, cloud.influence,
+  // The slab goes to its partition owners; from here on a rank holds its own points and their ghosts only.
+  PointCloud owned;
+  {
+    std::vector<int> index(slab.size());
+    std::iota(index.begin(), index.end(), 0);
+    owned = exchangePoints(comm, slab, index, partitionRcb(slab, comm));
+  }
+  pb.cloud = withoutPoints(slab);
+  slab = PointCloud();
+  const PointCloud& cloud = pb.cloud;
+  std::vector<double> horizon(owned.size());
+  for (int p = 0; p < owned.size(); ++p) horizon[p] = blocks.at(owned.block[p]).horizon;
+  // A PdQuickGrid cloud is block 1 only: its horizon sets the box neighbourhood.
+  const double h1 = blocks.count(1) ? blocks.at(1).horizon : blocks.begin()->second.horizon;
+  const std::array<double, 3> box = quickGridBox(deck.discretization, h1);
+  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence,
                                                     cloud.partialVolume ? &cloud.cell : nullptr,
                                                     deck.discretization.boxNeighbourhood ? &box : nullptr);
+  std::vector<double> x = layout->releaseCoordinates(), volume = layout->releaseVolumes();
+  requireDistinctPoints(*layout, x, volume, cloud.spacing, inputFile);
   const std::vector<int>& gids = layout->gids();
-  std::vector<double> x(3 * gids.size()), volume(gids.size());
-  for (std::size_t i = 0; i < gids.size(); ++i) {
-    for (int d = 0; d < 3; ++d) x[3 * i + d] = cloud.x[3 * gids[i] + d];
-    volume[i] = cloud.volume[gids[i]];
-  }
   std::vector<BlockModel> blockModels;
   for (const BlockRange& r : layout->blocks()) {
     const BlockSpec& s = blocks.at(r.blockId);
@@ -219,8 +238,11 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   pb.model = std::make_unique<Model>(std::move(layout), std::move(x), std::move(volume), std::move(blockModels));
   warnPointsWithoutBonds(*pb.model, inputFile);
 
-  // Node sets and boundary conditions.
-  pb.nodeSets = resolveNodeSets(deck.nodeSets, cloud, inputFile);
+  // Node sets (the owned points' gids in each) and boundary conditions.
+  CloudReductions reduce;
+  reduce.sum = [&](double v) { return comm.sum(v); };
+  reduce.max = [&](double v) { return comm.max(v); };
+  pb.nodeSets = resolveNodeSets(deck.nodeSets, owned, inputFile, reduce);
   for (const ConditionSpec& bc : deck.conditions) {
     NodalLoad load;
     load.coordinate = bc.coordinate;

@@ -15,8 +15,8 @@
 namespace pf {
 
 struct Problem {
-  PointCloud cloud;                                      // the whole cloud (every rank)
-  std::map<std::string, std::vector<int>> nodeSets;      // cloud indices
+  PointCloud cloud;                                      // the cloud's metadata only (spacing, planar, numGlobal)
+  std::map<std::string, std::vector<int>> nodeSets;      // per set: the gids of this rank's owned points in it
   std::unique_ptr<Model> model;
   std::vector<NodalLoad> initialDisplacements, initialVelocities;
   std::vector<std::string> prescribedNodeSets;           // node sets carrying a Prescribed Displacement

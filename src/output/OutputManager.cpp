@@ -57,10 +57,34 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   addReactions(out);
   applied_ = out.appliedDisplacement;
   bodyForce_.assign(model_.numDofs(), 0.0);
-  if (exodus_ && !(nodalVectors_.empty() && elementScalars_.empty()))
+  if (exodus_)
     gather_ = std::make_unique<ChunkedGather>(model_.layout().comm(), model_.layout().gids().data(), model_.numOwned(),
                                               model_.layout().numGlobal());
+  gatherMesh();
   onRoot([&] { openFiles(); });
+  mesh_ = Mesh();
+}
+
+// Collective: rank 0 gets every point's reference coordinates and block id in cloud order, for the Exodus
+// file's header (the only whole-cloud arrays, held while the writer is made).
+void OutputManager::gatherMesh() {
+  if (!gather_ || (nodalVectors_.empty() && elementScalars_.empty() && !globals_.empty())) return;  // dummy node
+  const std::vector<double>& x = model_.coordinates();
+  std::vector<ChunkedGather::Field> fields = {
+      {[&](int i, double* out) { std::copy(&x[3 * i], &x[3 * i] + 3, out); }, 3},
+      {[&](int i, double* out) {
+         for (const BlockModel& b : model_.blocks())
+           if (i >= b.begin && i < b.end) *out = b.blockId;
+       },
+       1}};
+  onRoot(
+      [&] {
+        gather_->gather(fields, [&](int, int count, const std::vector<const double*>& values) {
+          mesh_.coords.insert(mesh_.coords.end(), values[0], values[0] + 3 * count);
+          mesh_.blocks.insert(mesh_.blocks.end(), values[1], values[1] + count);
+        });
+      },
+      true);
 }
 
 // Collective: rank 0 runs write; its failure (a full disk, a missing directory) becomes every rank's error,
@@ -113,44 +137,54 @@ void OutputManager::requireGlobal(const std::string& var, const std::string& whe
   for (const BlockModel& b : model_.blocks()) b.material->enableOutput(f);
 }
 
-// Nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one; -1 if none
-// (a NaN coordinate). d2: its squared distance.
-int OutputManager::nearestPoint(const double* at, double* d2) const {
+// Collective: the nearest point of the whole cloud, ties to the lowest id, so every rank picks the same one;
+// -1 if none (a NaN coordinate). d2: its squared distance; at: its coordinates (every rank).
+int OutputManager::nearestPoint(const double* at, double* d2, double* where) const {
+  const std::vector<double>& x = model_.coordinates();
+  const std::vector<int>& gids = model_.layout().gids();
   int best = -1;
-  *d2 = std::numeric_limits<double>::max();
-  for (int q = 0; q < pb_.cloud.size(); ++q) {
+  double mine = std::numeric_limits<double>::max();
+  for (int i = 0; i < model_.numOwned(); ++i) {
     double d = 0;
-    for (int c = 0; c < 3; ++c) d += (pb_.cloud.x[3 * q + c] - at[c]) * (pb_.cloud.x[3 * q + c] - at[c]);
-    if (d < *d2) { *d2 = d; best = q; }
+    for (int c = 0; c < 3; ++c) d += (x[3 * i + c] - at[c]) * (x[3 * i + c] - at[c]);
+    if (d < mine || (d == mine && best >= 0 && gids[i] < gids[best])) mine = d, best = i;
   }
-  return best;
+  const Communicator& comm = model_.layout().comm();
+  *d2 = -comm.max(-mine);
+  const double id = -comm.max(best >= 0 && mine == *d2 ? -static_cast<double>(gids[best]) : -1e300);
+  if (id == 1e300) return -1;
+  const bool owner = best >= 0 && gids[best] == id;
+  double mineX[3] = {0, 0, 0};
+  if (owner) std::copy(&x[3 * best], &x[3 * best] + 3, mineX);
+  comm.sum(mineX, where, 3);  // only the owner adds: the sum is its coordinates exactly
+  return static_cast<int>(id);
 }
 
-// The grid spacing, or on an irregular cloud (Text File, unequal QuickGrid spacings) the distance from
-// point q to its nearest neighbour: how far a probe may lie from the body and still mean point q.
-double OutputManager::spacingAt(int q) const {
+// Collective: the grid spacing, or on an irregular cloud (Text File, unequal QuickGrid spacings) the distance
+// from point q (at xq) to its nearest neighbour: how far a probe may lie from the body and still mean q.
+double OutputManager::spacingAt(int q, const double* xq) const {
   if (pb_.cloud.spacing > 0.0) return pb_.cloud.spacing;
+  const std::vector<double>& x = model_.coordinates();
+  const std::vector<int>& gids = model_.layout().gids();
   double d2 = std::numeric_limits<double>::max();
-  for (int p = 0; p < pb_.cloud.size(); ++p) {
-    if (p == q) continue;
+  for (int i = 0; i < model_.numOwned(); ++i) {
+    if (gids[i] == q) continue;
     double d = 0;
-    for (int c = 0; c < 3; ++c) {
-      const double e = pb_.cloud.x[3 * p + c] - pb_.cloud.x[3 * q + c];
-      d += e * e;
-    }
+    for (int c = 0; c < 3; ++c) d += (x[3 * i + c] - xq[c]) * (x[3 * i + c] - xq[c]);
     d2 = std::min(d2, d);
   }
-  return pb_.cloud.size() > 1 ? std::sqrt(d2) : std::numeric_limits<double>::max();
+  d2 = -model_.layout().comm().max(-d2);
+  return model_.layout().numGlobal() > 1 ? std::sqrt(d2) : std::numeric_limits<double>::max();
 }
 
 OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::string& listName) const {
-  double d2 = 0;
-  const int best = nearestPoint(p.at.data(), &d2);
+  double d2 = 0, xb[3] = {0, 0, 0};
+  const int best = nearestPoint(p.at.data(), &d2, xb);
   std::ostringstream at;
   at << "(" << p.at[0] << ", " << p.at[1] << ", " << p.at[2] << ")";
   if (best < 0)
     throw InputError(inputFile_ + ": " + listName + "/Probes/" + p.name + ": position " + at.str() + " is not a point");
-  const double h = spacingAt(best);
+  const double h = spacingAt(best, xb);
   if (std::sqrt(d2) > h * (1.0 + 1e-9)) {
     std::ostringstream msg;
     msg << inputFile_ << ": " << listName << "/Probes/" << p.name << ": position " << at.str()
@@ -163,8 +197,7 @@ OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::s
   for (int i = 0; i < model_.numOwned(); ++i)
     if (gids[i] == best) probe.local = i;
   if (model_.layout().rank() == 0)
-    std::printf("probe %s: node %d at (%g, %g, %g)\n", p.name.c_str(), best + 1, pb_.cloud.x[3 * best],
-                pb_.cloud.x[3 * best + 1], pb_.cloud.x[3 * best + 2]);
+    std::printf("probe %s: node %d at (%g, %g, %g)\n", p.name.c_str(), best + 1, xb[0], xb[1], xb[2]);
   return probe;
 }
 
@@ -175,10 +208,9 @@ void OutputManager::addReactions(const OutputSpec& out) {
   const std::vector<int>& gids = model_.layout().gids();
   for (std::size_t k = 0; k < sets.size(); ++k) {
     Reaction r{sets[k], labels[k], {}};
-    std::vector<char> in(pb_.cloud.size(), 0);
-    for (int q : pb_.nodeSets.at(sets[k])) in[q] = 1;
+    const std::vector<int>& set = pb_.nodeSets.at(sets[k]);  // gids of owned points, ascending
     for (int i = 0; i < model_.numOwned(); ++i)
-      if (in[gids[i]]) r.nodes.push_back(i);
+      if (std::binary_search(set.begin(), set.end(), gids[i])) r.nodes.push_back(i);
     reactions_.push_back(r);
   }
 }
@@ -223,7 +255,7 @@ void OutputManager::openWriters(bool append) {
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
                                              false, nodalVectors_, scalars, elements, globals_, append);
   else
-    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), pb_.cloud.x, pb_.cloud.block, pb_.cloud.planar,
+    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), mesh_.coords, mesh_.blocks, pb_.cloud.planar,
                                              nodalVectors_, scalars, elements, globals_, append);
 }
 
@@ -346,6 +378,7 @@ void OutputManager::resumeFrom(const CheckpointData& data) {
   count_ = static_cast<long>(count.at(0));
   lastStep_ = count_ - 1;
   lastTime_ = count.at(1);
+  gatherMesh();
   onRoot([&] {
     writer_.reset();
     history_.reset();
@@ -362,6 +395,7 @@ void OutputManager::resumeFrom(const CheckpointData& data) {
     if (data.text(key + "csv").compare(0, header.size() + 1, header + "\n") != 0)
       throw std::runtime_error("the checkpoint's history has other columns than this deck's");
   });
+  mesh_ = Mesh();
 }
 
 void OutputManager::finish() {

@@ -68,8 +68,9 @@ class OutputManager : public StepObserver {
   void requireComputed(const std::string& var, const std::string& where) const;
   void requireGlobal(const std::string& var, const std::string& where) const;
   Probe locateProbe(const ProbeSpec& p, const std::string& listName) const;
-  int nearestPoint(const double* at, double* d2) const;
-  double spacingAt(int q) const;
+  int nearestPoint(const double* at, double* d2, double* where) const;
+  double spacingAt(int q, const double* xq) const;
+  void gatherMesh();
   void addReactions(const OutputSpec& out);
   void onRoot(const std::function<void()>& write, bool everyRank = false);
   void openFiles();
@@ -96,6 +97,10 @@ class OutputManager : public StepObserver {
   std::vector<Reaction> reactions_;
   std::unique_ptr<ExodusWriter> writer_;
   std::unique_ptr<ChunkedGather> gather_;  // built once: which owned points go to rank 0 in which chunk
+  struct Mesh {
+    std::vector<double> coords;  // rank 0, while the Exodus writer is made: every point's, in cloud order
+    std::vector<int> blocks;
+  } mesh_;
   std::unique_ptr<HistoryWriter> history_;
   std::unique_ptr<OutputFiles> files_;  // rank 0
   std::vector<double> bodyForce_;

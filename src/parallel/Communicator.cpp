@@ -58,6 +58,20 @@ std::vector<double> Communicator::gatherToRoot(const std::vector<double>& mine) 
   return out;
 }
 
+std::vector<double> Communicator::allGather(const std::vector<double>& mine) const {
+  const int n = static_cast<int>(mine.size());
+  std::vector<int> counts(size()), displs(size(), 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, impl_->mpi);
+  std::size_t total = 0;
+  for (int r = 0; r < size(); ++r) {
+    displs[r] = static_cast<int>(total);
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  std::vector<double> out(total);
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, out.data(), counts.data(), displs.data(), MPI_DOUBLE, impl_->mpi);
+  return out;
+}
+
 std::string Communicator::broadcast(const std::string& text, int root) const {
   int n = static_cast<int>(text.size());
   MPI_Bcast(&n, 1, MPI_INT, root, impl_->mpi);

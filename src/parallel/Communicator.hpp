@@ -27,6 +27,8 @@ class Communicator {
   bool anyFailed(bool mine) const { return firstFailing(mine) >= 0; }
   // Collective: rank 0 gets every rank's values concatenated in rank order; the others get an empty vector.
   std::vector<double> gatherToRoot(const std::vector<double>& mine) const;
+  // Collective: every rank gets every rank's values concatenated in rank order (few values per rank).
+  std::vector<double> allGather(const std::vector<double>& mine) const;
   // Collective: every rank returns root's text (the others' argument is ignored).
   std::string broadcast(const std::string& text, int root) const;
 

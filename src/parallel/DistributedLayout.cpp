@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <set>
 #include <numeric>
 #include <stdexcept>
@@ -15,6 +14,7 @@
 #include "discretization/SpaceFillingCurve.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/GhostTransfers.hpp"
+#include "parallel/PointExchange.hpp"
 
 namespace pf {
 
@@ -22,37 +22,55 @@ DistributedLayout::~DistributedLayout() = default;
 
 namespace {
 
-// Points of other ranks inside the owned points' bounding box grown by the largest horizon (and half a
-// cell diagonal for partial volumes), in Hilbert order.
-std::vector<int> ghostCandidates(const std::vector<double>& coords, const std::vector<int>& owner, int me,
-                                 const std::vector<int>& owned, const std::vector<double>& horizon,
-                                 const std::array<double, 3>* cell, const std::vector<std::uint64_t>& key) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, hmax = 0;
-  for (int p : owned) {
-    hmax = std::max(hmax, horizon[p]);
+// The ghost candidates of every rank: each rank's owned bounding box grown by its largest reach (and half
+// a cell diagonal for partial volumes) is shared; this rank sends each other rank its owned points inside
+// that rank's box. Returns the points received (from: their owners).
+PointCloud ghostCandidates(const Communicator& comm, const PointCloud& owned, const std::vector<double>& reach,
+                           const std::array<double, 3>* cell, std::vector<int>* from) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, rmax = 0;
+  for (int i = 0; i < owned.size(); ++i) {
+    rmax = std::max(rmax, reach[i]);
     for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], coords[3 * p + d]);
-      hi[d] = std::max(hi[d], coords[3 * p + d]);
+      lo[d] = std::min(lo[d], owned.x[3 * i + d]);
+      hi[d] = std::max(hi[d], owned.x[3 * i + d]);
     }
   }
-  std::vector<int> candidates;
-  if (!owned.empty()) {
-    const double pad = (hmax + (cell ? halfCellDiagonal(*cell) : 0.0)) * (1.0 + 1e-9);
-    for (int p = 0; p < static_cast<int>(owner.size()); ++p) {
-      if (owner[p] == me) continue;
+  std::vector<double> box(7, 0.0);  // lo - pad, hi + pad, and whether the rank owns any point
+  if (owned.size() > 0) {
+    const double pad = (rmax + (cell ? halfCellDiagonal(*cell) : 0.0)) * (1.0 + 1e-9);
+    for (int d = 0; d < 3; ++d) box[d] = lo[d] - pad, box[3 + d] = hi[d] + pad;
+    box[6] = 1.0;
+  }
+  const std::vector<double> boxes = comm.allGather(box);
+  std::vector<int> index, dest;
+  for (int q = 0; q < comm.size(); ++q) {
+    const double* b = &boxes[7 * q];
+    if (q == comm.rank() || b[6] == 0.0) continue;
+    for (int i = 0; i < owned.size(); ++i) {
       bool inside = true;
-      for (int d = 0; d < 3 && inside; ++d) inside = coords[3 * p + d] >= lo[d] - pad && coords[3 * p + d] <= hi[d] + pad;
-      if (inside) candidates.push_back(p);
+      for (int d = 0; d < 3 && inside; ++d) inside = owned.x[3 * i + d] >= b[d] && owned.x[3 * i + d] <= b[3 + d];
+      if (inside) index.push_back(i), dest.push_back(q);
     }
   }
-  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) { return key[a] != key[b] ? key[a] < key[b] : a < b; });
-  return candidates;
+  return exchangePoints(comm, owned, index, dest, from);
 }
 
-// Each row of family sorted by (key, cloud index) of its neighbours, cloud(local) naming a local index's point;
-// refLength and fraction (the per-bond arrays set so far) follow their bonds.
-template <class CloudIndex>
-void sortRows(BondFamily& family, CloudIndex cloud, const std::vector<std::uint64_t>& key) {
+// The bounding box of the whole cloud (every rank's points), for keys that do not depend on the partition.
+std::array<double, 6> globalBox(const Communicator& comm, const PointCloud& owned) {
+  double local[6] = {-1e300, -1e300, -1e300, -1e300, -1e300, -1e300}, global[6];  // -lo, hi
+  for (int i = 0; i < owned.size(); ++i)
+    for (int d = 0; d < 3; ++d) {
+      local[d] = std::max(local[d], -owned.x[3 * i + d]);
+      local[3 + d] = std::max(local[3 + d], owned.x[3 * i + d]);
+    }
+  comm.max(local, global, 6);
+  return {-global[0], -global[1], -global[2], global[3], global[4], global[5]};
+}
+
+// Each row of family sorted by (Hilbert key, cloud index) of its neighbours, order(local) giving that pair
+// for a local index; refLength and fraction (the per-bond arrays set so far) follow their bonds.
+template <class SortKey>
+void sortRows(BondFamily& family, SortKey sortKey) {
   std::vector<int> order, nb;
   std::vector<double> len, frac;
   const bool partial = !family.fraction.empty();
@@ -60,10 +78,8 @@ void sortRows(BondFamily& family, CloudIndex cloud, const std::vector<std::uint6
     const int b0 = family.offsets[i], b1 = family.offsets[i + 1];
     order.resize(b1 - b0);
     std::iota(order.begin(), order.end(), b0);
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-      const int pa = cloud(family.neighbors[a]), pb = cloud(family.neighbors[b]);
-      return key[pa] != key[pb] ? key[pa] < key[pb] : pa < pb;
-    });
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return sortKey(family.neighbors[a]) < sortKey(family.neighbors[b]); });
     nb.clear(), len.clear(), frac.clear();
     for (int b : order) {
       nb.push_back(family.neighbors[b]);
@@ -90,41 +106,50 @@ void setInfluence(BondFamily& family, const std::vector<double>& h, const Influe
 
 }  // namespace
 
-DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector<double>& coords,
-                                     const std::vector<int>& owner, const std::vector<double>& horizon,
-                                     const std::vector<int>& block, const Influence& influence,
+DistributedLayout::DistributedLayout(const Communicator& comm, const PointCloud& ownedPoints,
+                                     const std::vector<double>& horizon, const Influence& influence,
                                      const std::array<double, 3>* cell, const std::array<double, 3>* box)
     : comm_(comm) {
-  const int me = comm_.rank();
-  numGlobal_ = static_cast<int>(owner.size());
-  const std::vector<std::uint64_t> key = hilbertKeys(coords);
-
-  std::vector<int> owned;
-  for (int p = 0; p < numGlobal_; ++p)
-    if (owner[p] == me) owned.push_back(p);
-  std::sort(owned.begin(), owned.end(), [&](int a, int b) {
-    if (block[a] != block[b]) return block[a] < block[b];
-    if (key[a] != key[b]) return key[a] < key[b];
-    return a < b;
-  });
-  numOwned_ = static_cast<int>(owned.size());
+  numGlobal_ = static_cast<int>(ownedPoints.numGlobal);
+  numOwned_ = ownedPoints.size();
   // Ghosts: a box neighbourhood reaches as far as the ball around the box.
   std::vector<double> reach = horizon;
   if (box)
     for (double& r : reach) r = std::max(r, std::sqrt((*box)[0] * (*box)[0] + (*box)[1] * (*box)[1] + (*box)[2] * (*box)[2]));
-  const std::vector<int> candidates = ghostCandidates(coords, owner, me, owned, reach, cell, key);
+  std::vector<int> from;
+  const PointCloud ghosts = ghostCandidates(comm_, ownedPoints, reach, cell, &from);
+
+  const std::array<double, 6> whole = globalBox(comm_, ownedPoints);
+  const std::vector<std::uint64_t> ownedKey = hilbertKeys(ownedPoints.x, whole.data(), whole.data() + 3);
+  const std::vector<std::uint64_t> ghostKey = hilbertKeys(ghosts.x, whole.data(), whole.data() + 3);
+  // Owned points by block, then along the curve; candidates along the curve (gid breaks ties).
+  std::vector<int> owned(numOwned_), candidates(ghosts.size());
+  std::iota(owned.begin(), owned.end(), 0);
+  std::iota(candidates.begin(), candidates.end(), 0);
+  std::sort(owned.begin(), owned.end(), [&](int a, int b) {
+    if (ownedPoints.block[a] != ownedPoints.block[b]) return ownedPoints.block[a] < ownedPoints.block[b];
+    if (ownedKey[a] != ownedKey[b]) return ownedKey[a] < ownedKey[b];
+    return ownedPoints.gid[a] < ownedPoints.gid[b];
+  });
+  std::sort(candidates.begin(), candidates.end(), [&](int a, int b) {
+    return ghostKey[a] != ghostKey[b] ? ghostKey[a] < ghostKey[b] : ghosts.gid[a] < ghosts.gid[b];
+  });
 
   std::vector<double> pts;
   pts.reserve(3 * (owned.size() + candidates.size()));
-  for (int p : owned) pts.insert(pts.end(), &coords[3 * p], &coords[3 * p] + 3);
-  for (int p : candidates) pts.insert(pts.end(), &coords[3 * p], &coords[3 * p] + 3);
+  for (int p : owned) pts.insert(pts.end(), &ownedPoints.x[3 * p], &ownedPoints.x[3 * p] + 3);
+  for (int c : candidates) pts.insert(pts.end(), &ghosts.x[3 * c], &ghosts.x[3 * c] + 3);
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
   buildFamilies(pts, numOwned_, h, family_, cell, box);
   // Rows in a global order (Hilbert key, then cloud index) instead of local index order, where a point's
   // on-rank neighbours precede its ghosts: family sums then run in the same order at every rank count.
   const int nOwned = numOwned_;
-  sortRows(family_, [&](int local) { return local < nOwned ? owned[local] : candidates[local - nOwned]; }, key);
+  sortRows(family_, [&](int local) {
+    if (local < nOwned) return std::make_pair(ownedKey[owned[local]], ownedPoints.gid[owned[local]]);
+    const int c = candidates[local - nOwned];
+    return std::make_pair(ghostKey[c], ghosts.gid[c]);
+  });
   // A user-defined influence function can fail (not finite) at some bonds, so on some ranks only.
   collectively(comm_, [&] { setInfluence(family_, h, influence, cell != nullptr); });
 
@@ -132,21 +157,28 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const std::vector
   std::vector<int> ghostIndex(candidates.size(), -1);
   for (int j : family_.neighbors)
     if (j >= numOwned_) ghostIndex[j - numOwned_] = 0;
-  gids_ = owned;
-  for (std::size_t c = 0; c < candidates.size(); ++c)
-    if (ghostIndex[c] == 0) {
-      ghostIndex[c] = static_cast<int>(gids_.size());
-      gids_.push_back(candidates[c]);
+  std::set<int> sources;  // the ranks this one receives ghosts from (the messages of an import)
+  for (int p : owned) {
+    gids_.push_back(ownedPoints.gid[p]);
+    x_.insert(x_.end(), &ownedPoints.x[3 * p], &ownedPoints.x[3 * p] + 3);
+    volume_.push_back(ownedPoints.volume[p]);
+  }
+  for (std::size_t k = 0; k < candidates.size(); ++k)
+    if (ghostIndex[k] == 0) {
+      const int c = candidates[k];
+      ghostIndex[k] = static_cast<int>(gids_.size());
+      gids_.push_back(ghosts.gid[c]);
+      x_.insert(x_.end(), &ghosts.x[3 * c], &ghosts.x[3 * c] + 3);
+      volume_.push_back(ghosts.volume[c]);
+      sources.insert(from[c]);
     }
   for (int& j : family_.neighbors)
     if (j >= numOwned_) j = ghostIndex[j - numOwned_];
   family_.numNodes = numOverlap();
-  std::set<int> sources;  // the ranks this one receives ghosts from (the messages of an import)
-  for (std::size_t g = owned.size(); g < gids_.size(); ++g) sources.insert(owner[gids_[g]]);
   numGhostSources_ = static_cast<int>(sources.size());
 
   for (int i = 0; i < numOwned_; ++i) {
-    const int b = block[owned[i]];
+    const int b = ownedPoints.block[owned[i]];
     if (blocks_.empty() || blocks_.back().blockId != b) blocks_.push_back({b, i, i});
     blocks_.back().end = i + 1;
   }

@@ -9,6 +9,7 @@
 
 #include "core/BondFamily.hpp"
 #include "core/InfluenceFunction.hpp"
+#include "discretization/Discretization.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/GhostTransfers.hpp"
 
@@ -21,13 +22,15 @@ struct BlockRange {
 
 class DistributedLayout {
  public:
-  // Whole cloud on every rank: coords (3 per point), owner rank, horizon and block id per point; the
-  // influence function sets each bond's omega from its length and its owner's horizon. cell: the grid's
-  // cell for partial-volume families (see buildFamilies), or null for whole neighbour volumes. box: Peridigm's
+  // Collective. owned: this rank's points (ascending gid, as exchangePoints returns them; numGlobal set),
+  // horizon: one per owned point. Ghosts come from the ranks whose points lie within a reach of this rank's
+  // bounding box (an exchange of boxes, then of those points): no rank sees the whole cloud. The influence
+  // function sets each bond's omega from its length and its owner's horizon. cell: the grid's cell for
+  // partial-volume families (see buildFamilies), or null for whole neighbour volumes. box: Peridigm's
   // PdQuickGrid box neighbourhood (buildFamilies), or null for the spherical one.
-  DistributedLayout(const Communicator& comm, const std::vector<double>& coords, const std::vector<int>& owner,
-                    const std::vector<double>& horizon, const std::vector<int>& block, const Influence& influence,
-                    const std::array<double, 3>* cell = nullptr, const std::array<double, 3>* box = nullptr);
+  DistributedLayout(const Communicator& comm, const PointCloud& owned, const std::vector<double>& horizon,
+                    const Influence& influence, const std::array<double, 3>* cell = nullptr,
+                    const std::array<double, 3>* box = nullptr);
   ~DistributedLayout();
   DistributedLayout(const DistributedLayout&) = delete;
   DistributedLayout& operator=(const DistributedLayout&) = delete;
@@ -38,6 +41,10 @@ class DistributedLayout {
   int numGhosts() const { return numOverlap() - numOwned_; }
   int numGhostSources() const { return numGhostSources_; }  // ranks owning this rank's ghosts
   const std::vector<int>& gids() const { return gids_; }      // overlap-local -> cloud index (0-based)
+  // The overlap points' reference coordinates (3 per point) and volumes in overlap-local order, moved out
+  // (for the Model, which keeps them); empty after the first call.
+  std::vector<double> releaseCoordinates() { return std::move(x_); }
+  std::vector<double> releaseVolumes() { return std::move(volume_); }
   const std::vector<BlockRange>& blocks() const { return blocks_; }
   const BondFamily& family() const { return family_; }
   const Communicator& comm() const { return comm_; }
@@ -61,6 +68,7 @@ class DistributedLayout {
   Communicator comm_;
   int numOwned_ = 0, numGlobal_ = 0, numGhostSources_ = 0;
   std::vector<int> gids_;
+  std::vector<double> x_, volume_;
   std::vector<BlockRange> blocks_;
   BondFamily family_;
   std::unique_ptr<const GhostTransfers> transfers_;

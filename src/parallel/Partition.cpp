@@ -9,21 +9,16 @@
 namespace pf {
 namespace {
 
-// Zoltan sees only this rank's initial slice of the cloud; RCB then moves points between ranks.
-struct Slice {
-  const std::vector<double>* coords;
-  int first, count;
-};
-
+// Zoltan sees only this rank's slab of the cloud; RCB then moves points between ranks.
 int numObjects(void* data, int* ierr) {
   *ierr = ZOLTAN_OK;
-  return static_cast<Slice*>(data)->count;
+  return static_cast<const PointCloud*>(data)->size();
 }
 
 void objectList(void* data, int, int, ZOLTAN_ID_PTR gids, ZOLTAN_ID_PTR lids, int, float*, int* ierr) {
-  const Slice* s = static_cast<Slice*>(data);
-  for (int i = 0; i < s->count; ++i) {
-    gids[i] = static_cast<ZOLTAN_ID_TYPE>(s->first + i);
+  const PointCloud* s = static_cast<const PointCloud*>(data);
+  for (int i = 0; i < s->size(); ++i) {
+    gids[i] = static_cast<ZOLTAN_ID_TYPE>(s->gid[i]);
     lids[i] = static_cast<ZOLTAN_ID_TYPE>(i);
   }
   *ierr = ZOLTAN_OK;
@@ -34,20 +29,19 @@ int numGeometry(void*, int* ierr) {
   return 3;
 }
 
-void geometry(void* data, int, int, int num, ZOLTAN_ID_PTR gids, ZOLTAN_ID_PTR, int dim, double* out, int* ierr) {
-  const Slice* s = static_cast<Slice*>(data);
+void geometry(void* data, int, int, int num, ZOLTAN_ID_PTR, ZOLTAN_ID_PTR lids, int dim, double* out, int* ierr) {
+  const PointCloud* s = static_cast<const PointCloud*>(data);
   for (int i = 0; i < num; ++i)
-    for (int d = 0; d < dim; ++d) out[i * dim + d] = (*s->coords)[3 * gids[i] + d];
+    for (int d = 0; d < dim; ++d) out[i * dim + d] = s->x[3 * lids[i] + d];
   *ierr = ZOLTAN_OK;
 }
 
 }  // namespace
 
-std::vector<int> partitionRcb(const std::vector<double>& coords, const Communicator& communicator) {
+std::vector<int> partitionRcb(const PointCloud& slab, const Communicator& communicator) {
   const MPI_Comm comm = communicator.impl().mpi;
   const int rank = communicator.rank(), size = communicator.size();
-  const int n = static_cast<int>(coords.size() / 3);
-  std::vector<int> owner(n, 0);
+  std::vector<int> owner(slab.size(), rank);
   if (size == 1) return owner;
 
   float version = 0;
@@ -60,13 +54,11 @@ std::vector<int> partitionRcb(const std::vector<double>& coords, const Communica
   Zoltan_Set_Param(zz, "RETURN_LISTS", "EXPORT");
   Zoltan_Set_Param(zz, "RCB_OUTPUT_LEVEL", "0");
   Zoltan_Set_Param(zz, "KEEP_CUTS", "0");
-
-  Slice slice{&coords, static_cast<int>(static_cast<long long>(n) * rank / size), 0};
-  slice.count = static_cast<int>(static_cast<long long>(n) * (rank + 1) / size) - slice.first;
-  Zoltan_Set_Num_Obj_Fn(zz, numObjects, &slice);
-  Zoltan_Set_Obj_List_Fn(zz, objectList, &slice);
-  Zoltan_Set_Num_Geom_Fn(zz, numGeometry, &slice);
-  Zoltan_Set_Geom_Multi_Fn(zz, geometry, &slice);
+  void* data = const_cast<PointCloud*>(&slab);
+  Zoltan_Set_Num_Obj_Fn(zz, numObjects, data);
+  Zoltan_Set_Obj_List_Fn(zz, objectList, data);
+  Zoltan_Set_Num_Geom_Fn(zz, numGeometry, data);
+  Zoltan_Set_Geom_Multi_Fn(zz, geometry, data);
 
   int changes = 0, ngid = 0, nlid = 0, nimp = 0, nexp = 0;
   ZOLTAN_ID_PTR impG = nullptr, impL = nullptr, expG = nullptr, expL = nullptr;
@@ -77,12 +69,7 @@ std::vector<int> partitionRcb(const std::vector<double>& coords, const Communica
     Zoltan_Destroy(&zz);
     throw std::runtime_error("Zoltan RCB partitioning failed");
   }
-  // Start from the initial slices, apply this rank's exports, then combine: each point is set by exactly
-  // one rank (the one whose slice held it), so a MAX reduction over -1-initialised entries is exact.
-  std::vector<int> local(n, -1);
-  for (int i = 0; i < slice.count; ++i) local[slice.first + i] = rank;
-  for (int e = 0; e < nexp; ++e) local[expG[e]] = expPart[e];
-  MPI_Allreduce(local.data(), owner.data(), n, MPI_INT, MPI_MAX, comm);
+  for (int e = 0; e < nexp; ++e) owner[expL[e]] = expPart[e];
   Zoltan_LB_Free_Part(&impG, &impL, &impP, &impPart);
   Zoltan_LB_Free_Part(&expG, &expL, &expP, &expPart);
   Zoltan_Destroy(&zz);

@@ -1,13 +1,15 @@
 #pragma once
-// Assigns every point of a replicated point cloud to an MPI rank with Zoltan's recursive coordinate
-// bisection. Every rank passes the same coordinates and gets the same owner array back.
+// Assigns the points of a distributed cloud to MPI ranks with Zoltan's recursive coordinate bisection.
+// Each rank passes its slab (buildDiscretization's part `rank` of `size`) and learns where each of its
+// slab's points goes; no rank sees the whole cloud.
 #include <vector>
 
+#include "discretization/Discretization.hpp"
 #include "parallel/Communicator.hpp"
 
 namespace pf {
 
-// coords: 3 per point (the whole cloud, identical on all ranks). Returns owner rank per point.
-std::vector<int> partitionRcb(const std::vector<double>& coords, const Communicator& comm);
+// Collective. Returns the owner rank of each point of slab.
+std::vector<int> partitionRcb(const PointCloud& slab, const Communicator& comm);
 
 }  // namespace pf

@@ -35,18 +35,18 @@ class FailingMaterial : public pf::Material {
 // A row of 8 points, 1 apart, horizon 1.5, split in halves between the ranks.
 std::unique_ptr<pf::Model> rowModel(const pf::Communicator& comm, int failingRank) {
   const int n = 8;
-  std::vector<double> x(3 * n, 0.0), horizon(n, 1.5);
-  std::vector<int> owner(n), block(n, 1);
-  for (int p = 0; p < n; ++p) {
-    x[3 * p] = p;
-    owner[p] = p * comm.size() / n;
-  }
-  auto layout = std::make_unique<pf::DistributedLayout>(comm, x, owner, horizon, block, pf::Influence(pf::Influence::One));
-  std::vector<double> xo, vo;
-  for (int g : layout->gids()) {
-    xo.insert(xo.end(), {x[3 * g], 0.0, 0.0});
-    vo.push_back(1.0);
-  }
+  pf::PointCloud mine;
+  mine.numGlobal = n;
+  for (int p = 0; p < n; ++p)
+    if (p * comm.size() / n == comm.rank()) {
+      mine.gid.push_back(p);
+      mine.x.insert(mine.x.end(), {static_cast<double>(p), 0.0, 0.0});
+      mine.volume.push_back(1.0);
+      mine.block.push_back(1);
+    }
+  auto layout = std::make_unique<pf::DistributedLayout>(comm, mine, std::vector<double>(mine.size(), 1.5),
+                                                        pf::Influence(pf::Influence::One));
+  std::vector<double> xo = layout->releaseCoordinates(), vo = layout->releaseVolumes();
   const int owned = layout->numOwned();
   std::vector<pf::BlockModel> blocks = {
       {1, "block_1", "m", 1.5, 0, owned, std::make_shared<FailingMaterial>(failingRank, comm.rank())}};

@@ -81,6 +81,10 @@ periforge_check(bar_verlet_np1_vs_np2 "bar_verlet_np1;bar_verlet_np2"
 # User-facing errors.
 add_test(NAME input_errors COMMAND ${PY} ${REG}/errors/run_error_cases.py ${PERIFORGE_EXE} ${REG}/bar/bar_3d.xml)
 set_tests_properties(input_errors PROPERTIES LABELS "regression")
+# A Text File read in byte ranges, one per rank (issue 19 part 1): a bad line in the last rank's range is named
+# by its line in the whole file on every rank, at np 2 and 3; a good mesh runs.
+add_test(NAME text_file_ranks COMMAND ${PY} ${REG}/errors/text_file_ranks.py ${REG}/bar/bar_3d.xml ${PERIFORGE_EXE} ${MPIRUN})
+set_tests_properties(text_file_ranks PROPERTIES LABELS "regression" PROCESSORS 2 TIMEOUT 600)
 # Finite state or a clear stop (issue 15 part 3): non-finite states, unstable Fixed dt, duplicate and
 # isolated points, horizon below the spacing; np 1 and 2.
 add_test(NAME finite_state_errors COMMAND ${PY} ${REG}/errors/run_finite_cases.py ${PERIFORGE_EXE} ${REG} ${MPIRUN})

@@ -1,5 +1,6 @@
 // Discretizations (PdQuickGrid, Text File, Periforge generators) and node sets.
 #include <cmath>
+#include <map>
 
 #include <gtest/gtest.h>
 
@@ -52,6 +53,25 @@ ParameterList plate(const std::string& grid, double layerWidth) {
   h.set("X Center", 0.0);
   h.set("Y Center", 0.0);
   h.set("Radius", 15.0);
+  return d;
+}
+
+// A 4 x 4 x 2 box of unit cells with layers on two faces and a bore of radius 1 along z through its centre.
+ParameterList boxWithBore() {
+  ParameterList d;
+  d.set("Type", std::string("Box With Holes"));
+  d.set("X Length", 4.0);
+  d.set("Y Length", 4.0);
+  d.set("Z Length", 2.0);
+  d.set("Spacing", 1.0);
+  d.set("Fictitious Layers", std::string("Left Front"));
+  d.set("Layer Width", 2.0);
+  ParameterList& h = d.sublist("Holes").sublist("Bore");
+  h.set("X Center", 2.0);
+  h.set("Y Center", 2.0);
+  h.set("Z Center", 0.0);
+  h.set("Radius", 1.0);
+  h.set("Axis", std::string("0 0 1"));
   return d;
 }
 
@@ -134,6 +154,68 @@ TEST(Discretization, TextFileParsesAndRejectsBadLines) {
   EXPECT_INPUT_ERROR(pftest::cloudOf(d, kFile, dir), kFile, "up to 2147483647 (got 99999999999)");
 }
 
+// A rank builds only its slab: the slabs of any part count are the whole cloud's points, gids and generated
+// node sets, cut in order at N*part/parts.
+TEST(Discretization, SlabsAreTheWholeCloudInPieces) {
+  ParameterList d = boxWithBore();
+  const pf::DiscretizationSpec spec = pf::parseDiscretization(d, kFile, ".");
+  const pf::PointCloud whole = pf::buildDiscretization(spec, kFile);
+  const long long n = whole.size();
+  for (int parts : {2, 3, 7}) {
+    long long next = 0;
+    std::map<std::string, std::vector<int>> sets;
+    for (int part = 0; part < parts; ++part) {
+      const pf::PointCloud slab = pf::buildDiscretization(spec, kFile, part, parts);
+      EXPECT_EQ(slab.numGlobal, n);
+      ASSERT_EQ(slab.size(), n * (part + 1) / parts - n * part / parts);
+      for (int i = 0; i < slab.size(); ++i, ++next) {
+        ASSERT_EQ(slab.gid[i], next);
+        for (int c = 0; c < 3; ++c) ASSERT_EQ(slab.x[3 * i + c], whole.x[3 * next + c]);
+      }
+      for (const auto& kv : slab.generatedNodeSets) sets[kv.first].insert(sets[kv.first].end(), kv.second.begin(), kv.second.end());
+    }
+    EXPECT_EQ(next, n);
+    EXPECT_EQ(sets, whole.generatedNodeSets);
+  }
+}
+
+// A Text File is read in byte ranges that start at line starts, cover the file once, and count their
+// lines, so a bad line is named by its line in the whole file whichever range holds it.
+TEST(Discretization, MeshFileRangesCoverTheFile) {
+  std::string text = "# x y z block_id volume\n";
+  for (int i = 0; i < 40; ++i) text += std::to_string(i) + " 0 0 1 0.5" + (i % 7 == 3 ? "   # note\n\n" : "\n");
+  text += "40 0 0 1 0.5";  // no newline at the end
+  pftest::writeTemp("pf_ranges.txt", text);
+  ParameterList d;
+  d.set("Type", std::string("Text File"));
+  d.set("Input Mesh File", std::string("pf_ranges.txt"));
+  const pf::DiscretizationSpec spec = pf::parseDiscretization(d, kFile, ::testing::TempDir());
+  for (int parts : {1, 2, 5, 13}) {
+    long long end = 0, lines = 0;
+    std::vector<double> xs;
+    for (int part = 0; part < parts; ++part) {
+      const pf::MeshFileRange r = pf::meshFileRange(spec, kFile, part, parts);
+      EXPECT_EQ(r.begin, end);
+      EXPECT_TRUE(r.begin == 0 || r.begin == static_cast<long long>(text.size()) || text[r.begin - 1] == '\n');
+      const pf::PointCloud c = pf::readMeshRange(spec, kFile, r, lines);
+      for (int i = 0; i < c.size(); ++i) xs.push_back(c.x[3 * i]);
+      end = r.end, lines += r.lines;
+    }
+    EXPECT_EQ(end, static_cast<long long>(text.size()));
+    ASSERT_EQ(xs.size(), 41u);
+    for (int i = 0; i < 41; ++i) EXPECT_EQ(xs[i], i);
+  }
+  // Line 30 of the file is bad; part 1 of 2 holds it and names it by its line in the whole file.
+  std::string bad;
+  for (int i = 1; i <= 40; ++i) bad += i == 30 ? "1 2 3\n" : "0 0 " + std::to_string(i) + " 1 0.5\n";
+  pftest::writeTemp("pf_ranges_bad.txt", bad);
+  d.set("Input Mesh File", std::string("pf_ranges_bad.txt"));
+  const pf::DiscretizationSpec badSpec = pf::parseDiscretization(d, kFile, ::testing::TempDir());
+  const pf::MeshFileRange first = pf::meshFileRange(badSpec, kFile, 0, 2), second = pf::meshFileRange(badSpec, kFile, 1, 2);
+  EXPECT_EQ(pf::readMeshRange(badSpec, kFile, first, 0).size(), first.lines);
+  EXPECT_INPUT_ERROR(pf::readMeshRange(badSpec, kFile, second, first.lines), kFile, "pf_ranges_bad.txt:30:");
+}
+
 // The paper reports 154 336 nodes for the plate with two fictitious layers. This is reproduced by a
 // node grid (401 x 401 points including the edges), removing points strictly inside the hole
 // (|c - centre| < r keeps the 12 lattice points lying exactly on the circle), and layers of 6 rows
@@ -162,20 +244,7 @@ TEST(Discretization, PaperPlateCount) {
 }
 
 TEST(Discretization, BoxWithCylindricalHoleAndLayers) {
-  ParameterList d;
-  d.set("Type", std::string("Box With Holes"));
-  d.set("X Length", 4.0);
-  d.set("Y Length", 4.0);
-  d.set("Z Length", 2.0);
-  d.set("Spacing", 1.0);
-  d.set("Fictitious Layers", std::string("Left Front"));
-  d.set("Layer Width", 2.0);
-  ParameterList& h = d.sublist("Holes").sublist("Bore");
-  h.set("X Center", 2.0);
-  h.set("Y Center", 2.0);
-  h.set("Z Center", 0.0);
-  h.set("Radius", 1.0);
-  h.set("Axis", std::string("0 0 1"));
+  ParameterList d = boxWithBore();
   const pf::PointCloud c = pftest::cloudOf(d, kFile, ".");
   // 4x4x2 cells, centres at 0.5..3.5; the four central columns (distance 0.707) are removed, also
   // from the Front layer since the cylinder is unbounded along its axis.

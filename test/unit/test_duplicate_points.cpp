@@ -42,10 +42,6 @@ TEST(DuplicatePoints, FoundAcrossACellFace) {
 }
 
 TEST(DuplicatePoints, ToleranceFromSpacingOrSmallestVolume) {
-  pf::PointCloud c;
-  c.spacing = 2e-3;
-  EXPECT_DOUBLE_EQ(pf::duplicateTolerance(c), 2e-12);
-  c.spacing = 0;
-  c.volume = {8e-9, 0.0, 1.0};
-  EXPECT_NEAR(pf::duplicateTolerance(c), 2e-12, 1e-24);
+  EXPECT_DOUBLE_EQ(pf::duplicateTolerance(2e-3, 1.0), 2e-12);  // the spacing wins when there is one
+  EXPECT_NEAR(pf::duplicateTolerance(0.0, 8e-9), 2e-12, 1e-24);   // else the cube root of the smallest volume
 }
