@@ -70,7 +70,7 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
       scalarNames_(nodalScalarNames),
       elementNames_(elementScalarNames),
       globalNames_(globalNames) {
-  if (coords.size() != 3 * numNodes_)
+  if (!coords.empty() && coords.size() != 3 * numNodes_)
     throw std::runtime_error("ExodusWriter(" + filename + "): coords has " + std::to_string(coords.size()) +
                              " entries, expected 3 * " + std::to_string(numNodes_));
   if (numNodes_ == 0) throw std::runtime_error("ExodusWriter(" + filename + "): no nodes");
@@ -116,7 +116,8 @@ void ExodusWriter::create(const std::vector<double>& coords, const std::vector<s
     check(ex_put_init(exoid_, "Periforge", 3, nn, nn, static_cast<int64_t>(blockIds_.size()), 0, 0),
           "ex_put_init");
 
-    putCoordinates(coords);
+    if (!coords.empty()) putCoordinates(coords);
+    putCoordinateNames();
     putBlocks();
     if (!nodalNames.empty()) putVariableNames(EX_NODAL, nodalNames, "nodal");
     if (!elementNames_.empty()) {
@@ -160,19 +161,25 @@ void ExodusWriter::openToAppend(const std::vector<std::string>& nodalNames) {
 
 // In pieces of kPiece nodes, so that no whole-cloud copy is made beside the caller's arrays.
 void ExodusWriter::putCoordinates(const std::vector<double>& coords) const {
-  std::vector<double> x, y, z;
-  for (std::size_t begin = 0; begin < numNodes_; begin += kPiece) {
-    const std::size_t count = std::min(kPiece, numNodes_ - begin);
-    x.resize(count), y.resize(count), z.resize(count);
-    for (std::size_t n = 0; n < count; ++n) {
-      x[n] = coords[3 * (begin + n)];
-      y[n] = coords[3 * (begin + n) + 1];
-      z[n] = coords[3 * (begin + n) + 2];
-    }
-    check(ex_put_partial_coord(exoid_, static_cast<int64_t>(begin) + 1, static_cast<int64_t>(count), x.data(), y.data(),
-                               z.data()),
-          "ex_put_partial_coord");
+  for (std::size_t begin = 0; begin < numNodes_; begin += kPiece)
+    writeCoordinates(begin, std::min(kPiece, numNodes_ - begin), &coords[3 * begin]);
+}
+
+void ExodusWriter::writeCoordinates(std::size_t begin, std::size_t count, const double* xyz) const {
+  if (begin + count > numNodes_)
+    throw std::runtime_error("ExodusWriter(" + filename_ + "): coordinates of nodes past " + std::to_string(numNodes_));
+  std::vector<double> x(count), y(count), z(count);
+  for (std::size_t n = 0; n < count; ++n) {
+    x[n] = xyz[3 * n];
+    y[n] = xyz[3 * n + 1];
+    z[n] = xyz[3 * n + 2];
   }
+  check(ex_put_partial_coord(exoid_, static_cast<int64_t>(begin) + 1, static_cast<int64_t>(count), x.data(), y.data(),
+                             z.data()),
+        "ex_put_partial_coord");
+}
+
+void ExodusWriter::putCoordinateNames() const {
   std::vector<std::string> coordNames{"X", "Y", "Z"};
   auto coordPtrs = cstrings(coordNames);
   check(ex_put_coord_names(exoid_, coordPtrs.data()), "ex_put_coord_names");

@@ -17,7 +17,8 @@ namespace pf {
 // node g has element number g+1; the initial state is expected as the first writeStep.
 class ExodusWriter {
  public:
-  // coords: 3 per node. blockIdPerNode: 1-based block id per node.
+  // coords: 3 per node, or empty: the caller then writes them with writeCoordinates (every node, before the
+  // file is closed), so that no whole coordinate array is needed. blockIdPerNode: 1-based block id per node.
   // nodalVectorNames "Displacement" -> variables DisplacementX, DisplacementY, DisplacementZ.
   // Throws std::runtime_error (naming the file) on any ExodusII failure or bad sizes.
   // append: continue a file this writer wrote with the same arguments (a restart): it is opened, not
@@ -50,6 +51,9 @@ class ExodusWriter {
                   const std::vector<const double*>& scalars, const std::vector<const double*>& elements);
   void endStep(const std::map<std::string, double>& globals = {});
 
+  // Coordinates of nodes [begin, begin + count), 3 per node (a writer made with empty coords).
+  void writeCoordinates(std::size_t begin, std::size_t count, const double* xyz) const;
+
   int numStepsWritten() const { return step_; }
   const std::string& filename() const { return filename_; }
 
@@ -57,6 +61,7 @@ class ExodusWriter {
   void check(int status, const char* what) const;
   // Declares the variables of one kind (entityType: an ex_entity_type, e.g. EX_NODAL) and their names.
   void putCoordinates(const std::vector<double>& coords) const;
+  void putCoordinateNames() const;
   void putBlocks() const;
   void putVariableNames(int entityType, std::vector<std::string> names, const std::string& what) const;
   void create(const std::vector<double>& coords, const std::vector<std::string>& nodalNames);

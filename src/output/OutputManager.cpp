@@ -60,29 +60,44 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   if (exodus_)
     gather_ = std::make_unique<ChunkedGather>(model_.layout().comm(), model_.layout().gids().data(), model_.numOwned(),
                                               model_.layout().numGlobal());
-  gatherMesh();
+  gatherBlockIds();
   onRoot([&] { openFiles(); });
-  mesh_ = Mesh();
+  blockIds_ = std::vector<int>();
+  writeCoordinates();
 }
 
-// Collective: rank 0 gets every point's reference coordinates and block id in cloud order, for the Exodus
-// file's header (the only whole-cloud arrays, held while the writer is made).
-void OutputManager::gatherMesh() {
-  if (!gather_ || (nodalVectors_.empty() && elementScalars_.empty() && !globals_.empty())) return;  // dummy node
-  const std::vector<double>& x = model_.coordinates();
-  std::vector<ChunkedGather::Field> fields = {
-      {[&](int i, double* out) { std::copy(&x[3 * i], &x[3 * i] + 3, out); }, 3},
-      {[&](int i, double* out) {
-         for (const BlockModel& b : model_.blocks())
-           if (i >= b.begin && i < b.end) *out = b.blockId;
-       },
-       1}};
+bool OutputManager::dummyNodeFile() const {
+  return nodalVectors_.empty() && elementScalars_.empty() && !globals_.empty();
+}
+
+// Collective: rank 0 gets every point's block id in cloud order, for the Exodus file's element blocks (4 bytes
+// a point, held while the writer is made).
+void OutputManager::gatherBlockIds() {
+  if (!gather_ || dummyNodeFile()) return;
+  std::vector<ChunkedGather::Field> fields = {{[&](int i, double* out) {
+                                                 for (const BlockModel& b : model_.blocks())
+                                                   if (i >= b.begin && i < b.end) *out = b.blockId;
+                                               },
+                                               1}};
   onRoot(
       [&] {
         gather_->gather(fields, [&](int, int count, const std::vector<const double*>& values) {
-          mesh_.coords.insert(mesh_.coords.end(), values[0], values[0] + 3 * count);
-          mesh_.blocks.insert(mesh_.blocks.end(), values[1], values[1] + count);
+          blockIds_.insert(blockIds_.end(), values[0], values[0] + count);
         });
+      },
+      true);
+}
+
+// Collective: the new Exodus file's coordinates, chunk by chunk as the ranks send them.
+void OutputManager::writeCoordinates() {
+  if (!gather_ || dummyNodeFile()) return;
+  const std::vector<double>& x = model_.coordinates();
+  onRoot(
+      [&] {
+        gather_->gather({{[&](int i, double* out) { std::copy(&x[3 * i], &x[3 * i] + 3, out); }, 3}},
+                        [&](int begin, int count, const std::vector<const double*>& values) {
+                          writer_->writeCoordinates(begin, count, values[0]);
+                        });
       },
       true);
 }
@@ -250,12 +265,12 @@ void OutputManager::openWriters(bool append) {
   if (!exodus_) return;
   std::vector<std::string> scalars, elements;
   for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
-  if (nodalVectors_.empty() && elements.empty() && !globals_.empty())
+  if (dummyNodeFile())
     // Peridigm's file for global data only: one dummy node at the origin in one one-element block.
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
                                              false, nodalVectors_, scalars, elements, globals_, append);
   else
-    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), mesh_.coords, mesh_.blocks, pb_.cloud.planar,
+    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{}, blockIds_, pb_.cloud.planar,
                                              nodalVectors_, scalars, elements, globals_, append);
 }
 
@@ -378,7 +393,7 @@ void OutputManager::resumeFrom(const CheckpointData& data) {
   count_ = static_cast<long>(count.at(0));
   lastStep_ = count_ - 1;
   lastTime_ = count.at(1);
-  gatherMesh();
+  gatherBlockIds();
   onRoot([&] {
     writer_.reset();
     history_.reset();
@@ -395,7 +410,7 @@ void OutputManager::resumeFrom(const CheckpointData& data) {
     if (data.text(key + "csv").compare(0, header.size() + 1, header + "\n") != 0)
       throw std::runtime_error("the checkpoint's history has other columns than this deck's");
   });
-  mesh_ = Mesh();
+  blockIds_ = std::vector<int>();
 }
 
 void OutputManager::finish() {

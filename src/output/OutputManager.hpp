@@ -70,7 +70,9 @@ class OutputManager : public StepObserver {
   Probe locateProbe(const ProbeSpec& p, const std::string& listName) const;
   int nearestPoint(const double* at, double* d2, double* where) const;
   double spacingAt(int q, const double* xq) const;
-  void gatherMesh();
+  bool dummyNodeFile() const;  // Peridigm's file for global data only: one dummy node
+  void gatherBlockIds();
+  void writeCoordinates();
   void addReactions(const OutputSpec& out);
   void onRoot(const std::function<void()>& write, bool everyRank = false);
   void openFiles();
@@ -97,10 +99,7 @@ class OutputManager : public StepObserver {
   std::vector<Reaction> reactions_;
   std::unique_ptr<ExodusWriter> writer_;
   std::unique_ptr<ChunkedGather> gather_;  // built once: which owned points go to rank 0 in which chunk
-  struct Mesh {
-    std::vector<double> coords;  // rank 0, while the Exodus writer is made: every point's, in cloud order
-    std::vector<int> blocks;
-  } mesh_;
+  std::vector<int> blockIds_;  // rank 0, while the Exodus writer is made: every point's, in cloud order
   std::unique_ptr<HistoryWriter> history_;
   std::unique_ptr<OutputFiles> files_;  // rank 0
   std::vector<double> bodyForce_;
