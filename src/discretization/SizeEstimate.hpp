@@ -21,11 +21,12 @@ struct SizeEstimate {
 };
 
 // Peak resident bytes of one rank = fixed + perRankPoint * points + (perPoint * points + perBond * bonds) / np:
-// every rank holds the whole cloud, and its share of the distributed state. Fitted to peak RSS of real runs
+// a per-rank term fitted when every rank held the whole cloud (kept as an upper bound), and each rank's share
+// of the distributed state. Fitted to peak RSS of real runs
 // (docs/input.md, "Size and memory guard").
 struct MemoryModel {
   double fixed;         // executable, Trilinos, MPI: resident before the deck matters
-  double perRankPoint;  // the replicated PointCloud and partition input, on every rank
+  double perRankPoint;  // fitted to the replicated PointCloud of before the distributed set-up: an upper bound
   double perPoint;      // distributed per-point state, maps, vectors, output buffers
   double perBond;       // neighbour, length, influence, bond state (and NOX's pair matrix)
 };
