@@ -61,8 +61,11 @@ ReturnDerivative returnDerivative(const OsbTrialMoments& t, double dS2, double d
 
 // Node i: gathered family in scr (len, bond vectors, V_j), t^d_tr in scr.a; uses g0..g2 as work arrays.
 // Elastic nodes (most of a body) take only the first and the last bond pass.
+// PF_INLINE here and below: inlined into osbJ2ForceDerivative's target clones (avx512f, avx2), as the force
+// kernel is. Left out of line, these were compiled for the baseline ISA only, and the 8-lane trial loops spilled
+// to the stack: 4x the force kernel's time per call (BENCHMARKS.md "Consistent tangent").
 template <bool Unit>
-bool j2NodeDerivative(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const double* dy,
+PF_INLINE bool j2NodeDerivative(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const double* dy,
                       const J2Fields& s, int i, const osb::FamilyScratch& scr, double* dforce) {
   const OsbConstants& c = p.osb;
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
@@ -143,7 +146,7 @@ bool j2NodeDerivative(const FamilyView& fam, const J2Parameters& p, const J2Flow
 }
 
 template <bool Unit>
-bool j2Derivative(const FamilyView& fam, const J2Parameters& p, const double* y, const double* dy, const J2Fields& s,
+PF_INLINE bool j2Derivative(const FamilyView& fam, const J2Parameters& p, const double* y, const double* dy, const J2Fields& s,
                   double* dforce) {
   const J2Flow flow = j2Flow(p);
   osb::FamilyScratch& scr = osb::familyScratch(fam);

@@ -46,6 +46,9 @@ PointCloud ghostCandidates(const Communicator& comm, const PointCloud& owned, co
   for (int q = 0; q < comm.size(); ++q) {
     const double* b = &boxes[7 * q];
     if (q == comm.rank() || b[6] == 0.0) continue;
+    bool overlaps = true;  // only ranks whose box meets this rank's points are scanned: O(owned x neighbours)
+    for (int d = 0; d < 3; ++d) overlaps = overlaps && hi[d] >= b[d] && lo[d] <= b[3 + d];
+    if (!overlaps) continue;
     for (int i = 0; i < owned.size(); ++i) {
       bool inside = true;
       for (int d = 0; d < 3 && inside; ++d) inside = owned.x[3 * i + d] >= b[d] && owned.x[3 * i + d] <= b[3 + d];
