@@ -153,6 +153,17 @@ void generator(const DiscretizationSpec& d, const std::string& file, PointSink& 
 
 }  // namespace
 
+namespace {
+
+// Cuts a '#' comment off line; false when nothing but blanks is left (a line that holds no data).
+bool keepData(std::string& line) {
+  const std::size_t hash = line.find('#');
+  if (hash != std::string::npos) line.erase(hash);
+  return line.find_first_not_of(" \t\r") != std::string::npos;
+}
+
+}  // namespace
+
 void forEachDataLine(const std::string& full, const std::string& inputFile, const std::string& path,
                      const std::string& what,
                      const std::function<void(const std::string& text, const std::string& where)>& use) {
@@ -162,9 +173,7 @@ void forEachDataLine(const std::string& full, const std::string& inputFile, cons
   int lineNo = 0;
   while (std::getline(in, line)) {
     ++lineNo;
-    const std::size_t hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (!keepData(line)) continue;
     use(line, full + ":" + std::to_string(lineNo));
   }
 }
@@ -236,9 +245,7 @@ PointCloud readMeshRange(const DiscretizationSpec& d, const std::string& inputFi
   long long lineNo = firstLine;
   while (static_cast<long long>(in.tellg()) < range.end && std::getline(in, line)) {
     ++lineNo;
-    const std::size_t hash = line.find('#');
-    if (hash != std::string::npos) line.erase(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (!keepData(line)) continue;
     parseMeshLine(line, d.meshFile + ":" + std::to_string(lineNo), inputFile, c);
   }
   c.influence = d.influence;

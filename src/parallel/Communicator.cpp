@@ -44,30 +44,33 @@ int Communicator::firstFailing(bool mine) const {
   return lowest < size() ? lowest : -1;
 }
 
+namespace {
+
+// Where each rank's values start in the concatenation (a gatherv's displacements), and the total last.
+std::vector<int> displacements(const std::vector<int>& counts) {
+  std::vector<int> displs(counts.size() + 1, 0);
+  for (std::size_t r = 0; r < counts.size(); ++r) displs[r + 1] = displs[r] + counts[r];
+  return displs;
+}
+
+}  // namespace
+
 std::vector<double> Communicator::gatherToRoot(const std::vector<double>& mine) const {
   const int n = static_cast<int>(mine.size());
-  std::vector<int> counts(rank() == 0 ? size() : 0), displs(counts.size(), 0);
+  std::vector<int> counts(rank() == 0 ? size() : 0);
   MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, impl_->mpi);
-  std::size_t total = 0;
-  for (std::size_t r = 0; r < counts.size(); ++r) {
-    displs[r] = static_cast<int>(total);
-    total += static_cast<std::size_t>(counts[r]);
-  }
-  std::vector<double> out(total);
+  const std::vector<int> displs = displacements(counts);
+  std::vector<double> out(static_cast<std::size_t>(displs.back()));
   MPI_Gatherv(mine.data(), n, MPI_DOUBLE, out.data(), counts.data(), displs.data(), MPI_DOUBLE, 0, impl_->mpi);
   return out;
 }
 
 std::vector<double> Communicator::allGather(const std::vector<double>& mine) const {
   const int n = static_cast<int>(mine.size());
-  std::vector<int> counts(size()), displs(size(), 0);
+  std::vector<int> counts(size());
   MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, impl_->mpi);
-  std::size_t total = 0;
-  for (int r = 0; r < size(); ++r) {
-    displs[r] = static_cast<int>(total);
-    total += static_cast<std::size_t>(counts[r]);
-  }
-  std::vector<double> out(total);
+  const std::vector<int> displs = displacements(counts);
+  std::vector<double> out(static_cast<std::size_t>(displs.back()));
   MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, out.data(), counts.data(), displs.data(), MPI_DOUBLE, impl_->mpi);
   return out;
 }
