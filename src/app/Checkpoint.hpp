@@ -3,8 +3,10 @@
 // the output lists and, every Checkpoint Frequency steps, writes what a run needs to continue into one file
 // (output/CheckpointFile): the deck's fingerprint, u and v per point, every history field's committed values
 // per point or per bond (in global orders, so that any rank count reads it), the solver's position and
-// carry, and every output list's step count and files so far. loadCheckpoint reads one back on every rank
-// and checks it against this run's deck; applyCheckpoint puts the state in place and says where to go on.
+// carry, and every output list's step count and files so far. Rank 0 writes and reads the file; the fields
+// pass through it chunk by chunk (parallel/ChunkedGather), so no rank holds a whole field. loadCheckpoint
+// opens one and checks it against this run's deck; applyCheckpoint puts the state in place and says where
+// to go on (src/app/CheckpointRestore.cpp).
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -15,6 +17,7 @@
 #include "model/ModelBuilder.hpp"
 #include "output/CheckpointFile.hpp"
 #include "output/OutputManager.hpp"
+#include "parallel/ChunkedGather.hpp"
 #include "parallel/GlobalBondOrder.hpp"
 #include "solvers/Solver.hpp"
 
@@ -40,6 +43,8 @@ class Checkpointer : public StepObserver {
   Problem& problem_;
   const std::vector<std::unique_ptr<OutputManager>>& managers_;
   GlobalBondOrder bonds_;
+  ChunkedGather points_;  // owned points to rank 0 in cloud order, chunk by chunk
+  ChunkedGather bondPoints_;  // the same for per-bond values, in smaller chunks (GlobalBondOrder::chunkPoints)
   std::vector<std::pair<std::string, std::string>> fingerprint_;  // computed once (a collective sum)
   long count_;
   std::size_t solver_ = 0;
@@ -53,8 +58,9 @@ struct RestartPoint {
   SolverResume resume;
 };
 
-// Collective: every rank reads file and checks it against this run; InputError "'file': why" on every rank
-// for a missing, truncated, corrupt or foreign checkpoint.
+// Collective: rank 0 opens file (data.source) and every rank gets its small sections and its numbers
+// sections' sizes, checked against this run; InputError "'file': why" on every rank for a missing,
+// truncated, corrupt or foreign checkpoint.
 CheckpointData loadCheckpoint(const std::string& file, const Deck& deck, const Problem& problem);
 // Collective: u, v and the committed state of every history field from data; the point to continue from.
 RestartPoint applyCheckpoint(const std::string& file, const CheckpointData& data, Problem& problem,

@@ -60,12 +60,10 @@ void StateStore::rollback() {
     if (kv.second.spec.history) kv.second.trial = kv.second.committed;
 }
 
-void StateStore::restoreCommitted(const std::string& name, const std::vector<double>& values) {
+double* StateStore::restoreCommitted(const std::string& name) {
   Field& f = field(name);
-  if (!f.spec.history || values.size() != f.committed.size())
-    throw std::logic_error("state field '" + name + "': cannot restore " + std::to_string(values.size()) + " values");
-  f.committed = values;
-  f.trial = values;
+  if (!f.spec.history) throw std::logic_error("state field '" + name + "' keeps no history to restore");
+  return f.committed.data();
 }
 
 }  // namespace pf

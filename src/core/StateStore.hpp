@@ -35,8 +35,9 @@ class StateStore {
   // a material must write every trial value of its history fields on each evaluation, from committed.
   void commit();
   void rollback();  // committed -> trial for every history field (a copy: trial is then valid)
-  // A restart: the committed values of history field `name` (as many as it has entries), copied to trial too.
-  void restoreCommitted(const std::string& name, const std::vector<double>& values);
+  // A restart: where to write the committed values of history field `name` (as many as it has entries);
+  // rollback() then copies them to trial. std::logic_error if the field keeps no history.
+  double* restoreCommitted(const std::string& name);
 
  private:
   struct Field {

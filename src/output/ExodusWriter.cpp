@@ -3,6 +3,7 @@
 #include <exodusII.h>
 
 #include <algorithm>
+#include <functional>
 #include <cstdio>
 #include <set>
 #include <stdexcept>
@@ -57,14 +58,20 @@ void ExodusWriter::putVariableNames(int entityType, std::vector<std::string> nam
         ("ex_put_variable_names(" + what + ")").c_str());
 }
 
-ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double>& coords,
-                           const std::vector<int>& blockIdPerNode, bool planar,
-                           const std::vector<std::string>& nodalVectorNames,
+void BlockRuns::add(const int* ids, std::size_t count) {
+  for (std::size_t k = 0; k < count; ++k, ++numNodes_) {
+    if (runs_.empty() || runs_.back().id != ids[k]) runs_.push_back({numNodes_, numNodes_, ids[k]});
+    runs_.back().end = numNodes_ + 1;
+  }
+}
+
+ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double>& coords, const BlockRuns& blocks,
+                           bool planar, const std::vector<std::string>& nodalVectorNames,
                            const std::vector<std::string>& nodalScalarNames,
                            const std::vector<std::string>& elementScalarNames,
                            const std::vector<std::string>& globalNames, bool append)
     : filename_(filename),
-      numNodes_(blockIdPerNode.size()),
+      numNodes_(blocks.numNodes()),
       planar_(planar),
       vectorNames_(nodalVectorNames),
       scalarNames_(nodalScalarNames),
@@ -83,18 +90,16 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
   checkNames(filename, elementNames_, "element");
   checkNames(filename, globalNames_, "global");
 
-  for (int b : blockIdPerNode) {  // the distinct ids, sorted (a few: no copy of the whole list)
-    if (b < 1) throw std::runtime_error("ExodusWriter(" + filename + "): block ids must be >= 1");
-    const auto at = std::lower_bound(blockIds_.begin(), blockIds_.end(), b);
-    if (at == blockIds_.end() || *at != b) blockIds_.insert(at, b);
+  for (const BlockRuns::Run& r : blocks.runs()) {  // the distinct ids, sorted
+    if (r.id < 1) throw std::runtime_error("ExodusWriter(" + filename + "): block ids must be >= 1");
+    const auto at = std::lower_bound(blockIds_.begin(), blockIds_.end(), r.id);
+    if (at == blockIds_.end() || *at != r.id) blockIds_.insert(at, r.id);
   }
   blockSizes_.assign(blockIds_.size(), 0);
-  for (std::size_t n = 0; n < numNodes_; ++n) {
-    const auto b = static_cast<std::size_t>(
-        std::lower_bound(blockIds_.begin(), blockIds_.end(), blockIdPerNode[n]) - blockIds_.begin());
-    if (runs_.empty() || runs_.back().b != b || runs_.back().end != n) runs_.push_back({n, n, blockSizes_[b], b});
-    runs_.back().end = n + 1;
-    ++blockSizes_[b];
+  for (const BlockRuns::Run& r : blocks.runs()) {
+    const auto b = static_cast<std::size_t>(std::lower_bound(blockIds_.begin(), blockIds_.end(), r.id) - blockIds_.begin());
+    runs_.push_back({r.begin, r.end, blockSizes_[b], b});
+    blockSizes_[b] += r.end - r.begin;
   }
 
   if (append)
@@ -185,25 +190,40 @@ void ExodusWriter::putCoordinateNames() const {
   check(ex_put_coord_names(exoid_, coordPtrs.data()), "ex_put_coord_names");
 }
 
-// Nodes keep their global order (local index = global id - 1); elements are renumbered block by block
-// by Exodus, so the element number map carries the global id back. One block's connectivity at a time.
-void ExodusWriter::putBlocks() const {
+// Block b's nodes in node order as 1-based ids, to put(first, ids) in pieces of at most kPiece; first: the
+// 1-based position of the piece's first element in the block.
+void ExodusWriter::forBlockNodes(std::size_t b, const std::function<void(int64_t, const std::vector<int>&)>& put) const {
   std::vector<int> ids;
-  auto blockNodes = [&](std::size_t b) {  // the nodes of block b in node order, 1-based
-    ids.clear();
-    for (const Run& r : runs_)
-      if (r.b == b)
-        for (std::size_t n = r.begin; n < r.end; ++n) ids.push_back(static_cast<int>(n) + 1);
-  };
+  int64_t first = 1;
+  for (const Run& r : runs_) {
+    if (r.b != b) continue;
+    for (std::size_t n = r.begin; n < r.end; ++n) {
+      ids.push_back(static_cast<int>(n) + 1);
+      if (ids.size() < kPiece) continue;
+      put(first, ids);
+      first += static_cast<int64_t>(ids.size());
+      ids.clear();
+    }
+  }
+  if (!ids.empty()) put(first, ids);
+}
+
+// Nodes keep their global order (local index = global id - 1); elements are renumbered block by block
+// by Exodus, so the element number map carries the global id back. Everything in pieces of kPiece entries,
+// so no per-node list is made.
+void ExodusWriter::putBlocks() const {
   for (std::size_t b = 0; b < blockIds_.size(); ++b) {
     check(ex_put_block(exoid_, EX_ELEM_BLOCK, blockIds_[b], "SPHERE", static_cast<int64_t>(blockSizes_[b]), 1, 0, 0, 0),
           "ex_put_block");
-    blockNodes(b);
-    check(ex_put_conn(exoid_, EX_ELEM_BLOCK, blockIds_[b], ids.data(), nullptr, nullptr), "ex_put_conn");
+    forBlockNodes(b, [&](int64_t first, const std::vector<int>& ids) {
+      check(ex_put_partial_elem_conn(exoid_, blockIds_[b], first, static_cast<int64_t>(ids.size()), ids.data()),
+            "ex_put_partial_elem_conn");
+    });
     const std::string name = "block_" + std::to_string(blockIds_[b]);
     check(ex_put_name(exoid_, EX_ELEM_BLOCK, blockIds_[b], name.c_str()), "ex_put_name");
   }
   // The node map, then the element map (the order the file's variables are defined in).
+  std::vector<int> ids;
   for (std::size_t begin = 0; begin < numNodes_; begin += kPiece) {
     const std::size_t count = std::min(kPiece, numNodes_ - begin);
     ids.resize(count);
@@ -212,12 +232,13 @@ void ExodusWriter::putBlocks() const {
                                 ids.data()),
           "ex_put_partial_id_map(nodes)");
   }
-  int64_t firstElement = 1;
+  int64_t blockStart = 0;  // elements before block b
   for (std::size_t b = 0; b < blockIds_.size(); ++b) {
-    blockNodes(b);
-    const auto size = static_cast<int64_t>(blockSizes_[b]);
-    check(ex_put_partial_id_map(exoid_, EX_ELEM_MAP, firstElement, size, ids.data()), "ex_put_partial_id_map(elements)");
-    firstElement += size;
+    forBlockNodes(b, [&](int64_t first, const std::vector<int>& piece) {
+      check(ex_put_partial_id_map(exoid_, EX_ELEM_MAP, blockStart + first, static_cast<int64_t>(piece.size()), piece.data()),
+            "ex_put_partial_id_map(elements)");
+    });
+    blockStart += static_cast<int64_t>(blockSizes_[b]);
   }
 }
 

@@ -2,11 +2,33 @@
 // Merged ExodusII output laid out like Peridigm's, so that gold files from Peridigm and
 // Periforge results can be compared with scripts/exodiff.py (see docs/output.md).
 
+#include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 namespace pf {
+
+// Which element block each node is in, as runs of consecutive nodes of one block id (a few per block, not an
+// entry per node), so a writer can be made without a whole per-node list: the ids come a piece at a time.
+class BlockRuns {
+ public:
+  struct Run {
+    std::size_t begin, end;  // nodes [begin, end)
+    int id;                  // 1-based block id
+  };
+  BlockRuns() = default;
+  explicit BlockRuns(const std::vector<int>& blockIdPerNode) { add(blockIdPerNode.data(), blockIdPerNode.size()); }
+  void add(const int* ids, std::size_t count);  // the block ids of the next count nodes
+  std::size_t numNodes() const { return numNodes_; }
+  const std::vector<Run>& runs() const { return runs_; }
+
+ private:
+  std::vector<Run> runs_;
+  std::size_t numNodes_ = 0;
+};
 
 // Writes one merged file. Construct it on rank 0 only: the ExodusII C library is not
 // thread/rank aware and every array passed in is already gathered in global-id order.
@@ -18,17 +40,25 @@ namespace pf {
 class ExodusWriter {
  public:
   // coords: 3 per node, or empty: the caller then writes them with writeCoordinates (every node, before the
-  // file is closed), so that no whole coordinate array is needed. blockIdPerNode: 1-based block id per node.
+  // file is closed), so that no whole coordinate array is needed. blocks (or blockIdPerNode, the same as a
+  // whole list): each node's 1-based block id.
   // nodalVectorNames "Displacement" -> variables DisplacementX, DisplacementY, DisplacementZ.
   // Throws std::runtime_error (naming the file) on any ExodusII failure or bad sizes.
   // append: continue a file this writer wrote with the same arguments (a restart): it is opened, not
   // created, and the next writeStep follows its last step; a file with other variables is an error.
+  ExodusWriter(const std::string& filename, const std::vector<double>& coords, const BlockRuns& blocks, bool planar,
+               const std::vector<std::string>& nodalVectorNames,
+               const std::vector<std::string>& nodalScalarNames,
+               const std::vector<std::string>& elementScalarNames,
+               const std::vector<std::string>& globalNames = {}, bool append = false);
   ExodusWriter(const std::string& filename, const std::vector<double>& coords,
                const std::vector<int>& blockIdPerNode, bool planar,
                const std::vector<std::string>& nodalVectorNames,
                const std::vector<std::string>& nodalScalarNames,
                const std::vector<std::string>& elementScalarNames,
-               const std::vector<std::string>& globalNames = {}, bool append = false);
+               const std::vector<std::string>& globalNames = {}, bool append = false)
+      : ExodusWriter(filename, coords, BlockRuns(blockIdPerNode), planar, nodalVectorNames, nodalScalarNames,
+                     elementScalarNames, globalNames, append) {}
   ~ExodusWriter();
 
   ExodusWriter(const ExodusWriter&) = delete;
@@ -63,6 +93,7 @@ class ExodusWriter {
   void putCoordinates(const std::vector<double>& coords) const;
   void putCoordinateNames() const;
   void putBlocks() const;
+  void forBlockNodes(std::size_t b, const std::function<void(int64_t, const std::vector<int>&)>& put) const;
   void putVariableNames(int entityType, std::vector<std::string> names, const std::string& what) const;
   void create(const std::vector<double>& coords, const std::vector<std::string>& nodalNames);
   void openToAppend(const std::vector<std::string>& nodalNames);

@@ -58,11 +58,10 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   applied_ = out.appliedDisplacement;
   bodyForce_.assign(model_.numDofs(), 0.0);
   if (exodus_)
-    gather_ = std::make_unique<ChunkedGather>(model_.layout().comm(), model_.layout().gids().data(), model_.numOwned(),
-                                              model_.layout().numGlobal());
+    gather_ = std::make_unique<ChunkedGather>(model_.layout().ownedInChunks());
   gatherBlockIds();
   onRoot([&] { openFiles(); });
-  blockIds_ = std::vector<int>();
+  blockRuns_ = BlockRuns();
   writeCoordinates();
 }
 
@@ -70,8 +69,8 @@ bool OutputManager::dummyNodeFile() const {
   return nodalVectors_.empty() && elementScalars_.empty() && !globals_.empty();
 }
 
-// Collective: rank 0 gets every point's block id in cloud order, for the Exodus file's element blocks (4 bytes
-// a point, held while the writer is made).
+// Collective: rank 0 gets every point's block in cloud order, for the Exodus file's element blocks, as runs of
+// points of one block (chunk by chunk: no per-point list; a few runs per block).
 void OutputManager::gatherBlockIds() {
   if (!gather_ || dummyNodeFile()) return;
   std::vector<ChunkedGather::Field> fields = {{[&](int i, double* out) {
@@ -81,8 +80,10 @@ void OutputManager::gatherBlockIds() {
                                                1}};
   onRoot(
       [&] {
+        std::vector<int> ids;
         gather_->gather(fields, [&](int, int count, const std::vector<const double*>& values) {
-          blockIds_.insert(blockIds_.end(), values[0], values[0] + count);
+          ids.assign(values[0], values[0] + count);
+          blockRuns_.add(ids.data(), ids.size());
         });
       },
       true);
@@ -270,7 +271,7 @@ void OutputManager::openWriters(bool append) {
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
                                              false, nodalVectors_, scalars, elements, globals_, append);
   else
-    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{}, blockIds_, pb_.cloud.planar,
+    writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{}, blockRuns_, pb_.cloud.planar,
                                              nodalVectors_, scalars, elements, globals_, append);
 }
 
@@ -397,20 +398,20 @@ void OutputManager::resumeFrom(const CheckpointData& data) {
   onRoot([&] {
     writer_.reset();
     history_.reset();
+    if (!data.source) throw std::logic_error("OutputManager::resumeFrom: rank 0 needs the checkpoint file");
     for (const auto& [suffix, section] : {std::make_pair(".csv", "csv"), std::make_pair(".e", "exodus")}) {
       if (suffix == std::string(".e") && !exodus_) continue;
-      std::ofstream out(files_->part(suffix), std::ios::binary | std::ios::trunc);
-      const std::string& bytes = data.text(key + section);
-      if (!out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) || !out.flush())
-        throw std::runtime_error("cannot write '" + files_->part(suffix) + "'");
+      data.source->copyTo(key + section, files_->part(suffix));
     }
     openWriters(true);
     std::string header;
     for (const std::string& c : history_->columns()) header += (header.empty() ? "" : ",") + c;
-    if (data.text(key + "csv").compare(0, header.size() + 1, header + "\n") != 0)
+    std::ifstream csv(files_->part(".csv"), std::ios::binary);
+    std::string first;
+    if (!std::getline(csv, first) || first != header)
       throw std::runtime_error("the checkpoint's history has other columns than this deck's");
   });
-  blockIds_ = std::vector<int>();
+  blockRuns_ = BlockRuns();
 }
 
 void OutputManager::finish() {

@@ -23,12 +23,12 @@
 #include <vector>
 
 #include "model/ModelBuilder.hpp"
+#include "output/ExodusWriter.hpp"
 #include "solvers/Solver.hpp"
 
 namespace pf {
 
 class ChunkedGather;
-class ExodusWriter;
 struct CheckpointData;
 class HistoryWriter;
 class OutputFiles;
@@ -99,7 +99,7 @@ class OutputManager : public StepObserver {
   std::vector<Reaction> reactions_;
   std::unique_ptr<ExodusWriter> writer_;
   std::unique_ptr<ChunkedGather> gather_;  // built once: which owned points go to rank 0 in which chunk
-  std::vector<int> blockIds_;  // rank 0, while the Exodus writer is made: every point's, in cloud order
+  BlockRuns blockRuns_;  // rank 0, while the Exodus writer is made: the points' blocks in cloud order
   std::unique_ptr<HistoryWriter> history_;
   std::unique_ptr<OutputFiles> files_;  // rank 0
   std::vector<double> bodyForce_;

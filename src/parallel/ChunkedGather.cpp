@@ -117,4 +117,74 @@ void ChunkedGather::receiveChunks(const std::vector<Field>& fields, int nvals, c
   if (error) std::rethrow_exception(error);
 }
 
+void ChunkedGather::gatherVariable(const VariableField& field, const VariableWriter& write) const {
+  if (comm_.rank() == 0)
+    receiveVariable(field, write);
+  else
+    sendVariable(field);
+}
+
+// One message per chunk this rank has points in: their offsets in the chunk, their widths, then the values.
+void ChunkedGather::sendVariable(const VariableField& field) const {
+  std::vector<double> msg;
+  for (int k = 0; k < numChunks_; ++k) {
+    const int b = chunkStart_[k], m = chunkStart_[k + 1] - b;
+    if (m == 0) continue;
+    msg.assign(static_cast<std::size_t>(2 * m), 0.0);
+    for (int e = b; e < b + m; ++e) {
+      msg[e - b] = offsetInChunk_[e];
+      msg[m + e - b] = field.width(order_[e]);
+    }
+    for (int e = b; e < b + m; ++e) {
+      const std::size_t at = msg.size();
+      msg.resize(at + static_cast<std::size_t>(msg[m + e - b]));
+      field.values(order_[e], msg.data() + at);
+    }
+    MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_DOUBLE, 0, kTag, comm_.impl().mpi);
+  }
+}
+
+void ChunkedGather::receiveVariable(const VariableField& field, const VariableWriter& write) const {
+  const int size = comm_.size();
+  std::vector<std::vector<double>> msgs(static_cast<std::size_t>(size));
+  std::vector<std::size_t> start;  // each point of the chunk: where its values begin
+  std::vector<double> values;
+  std::exception_ptr error;
+  for (int k = 0; k < numChunks_; ++k) {
+    const int begin = k * chunk_, count = std::min(chunk_, numGlobal_ - begin);
+    start.assign(static_cast<std::size_t>(count) + 1, 0);
+    for (int e = chunkStart_[k]; e < chunkStart_[k + 1]; ++e) start[offsetInChunk_[e] + 1] = field.width(order_[e]);
+    for (int r = 1; r < size; ++r) {
+      const int m = counts_[static_cast<std::size_t>(k) * size + r];
+      if (m == 0) continue;
+      MPI_Status status;
+      MPI_Probe(r, kTag, comm_.impl().mpi, &status);
+      int n = 0;
+      MPI_Get_count(&status, MPI_DOUBLE, &n);
+      msgs[r].resize(static_cast<std::size_t>(n));
+      MPI_Recv(msgs[r].data(), n, MPI_DOUBLE, r, kTag, comm_.impl().mpi, MPI_STATUS_IGNORE);
+      for (int e = 0; e < m; ++e) start[static_cast<std::size_t>(msgs[r][e]) + 1] = msgs[r][m + e];
+    }
+    for (int p = 0; p < count; ++p) start[p + 1] += start[p];
+    values.resize(start.back());
+    for (int e = chunkStart_[k]; e < chunkStart_[k + 1]; ++e) field.values(order_[e], values.data() + start[offsetInChunk_[e]]);
+    for (int r = 1; r < size; ++r) {
+      const int m = counts_[static_cast<std::size_t>(k) * size + r];
+      const double* in = msgs[r].data() + 2 * m;
+      for (int e = 0; e < m; ++e) {
+        const std::size_t p = static_cast<std::size_t>(msgs[r][e]), w = start[p + 1] - start[p];
+        std::copy_n(in, w, values.data() + start[p]);
+        in += w;
+      }
+    }
+    if (error) continue;
+    try {
+      write(begin, count, values.data(), values.size());
+    } catch (...) {
+      error = std::current_exception();
+    }
+  }
+  if (error) std::rethrow_exception(error);
+}
+
 }  // namespace pf

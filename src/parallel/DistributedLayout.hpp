@@ -10,6 +10,7 @@
 #include "core/BondFamily.hpp"
 #include "core/InfluenceFunction.hpp"
 #include "discretization/Discretization.hpp"
+#include "parallel/ChunkedGather.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/GhostTransfers.hpp"
 
@@ -41,6 +42,10 @@ class DistributedLayout {
   int numGhosts() const { return numOverlap() - numOwned_; }
   int numGhostSources() const { return numGhostSources_; }  // ranks owning this rank's ghosts
   const std::vector<int>& gids() const { return gids_; }      // overlap-local -> cloud index (0-based)
+  // Collective: the owned points' pattern for fields to and from rank 0 in cloud order, chunk by chunk.
+  ChunkedGather ownedInChunks(int chunkPoints = ChunkedGather::kDefaultChunkPoints) const {
+    return ChunkedGather(comm_, gids_.data(), numOwned(), numGlobal_, chunkPoints);
+  }
   // The overlap points' reference coordinates (3 per point) and volumes in overlap-local order, moved out
   // (for the Model, which keeps them); empty after the first call.
   std::vector<double> releaseCoordinates() { return std::move(x_); }

@@ -1,6 +1,9 @@
 // ChunkedGather under ctest at np = 2 and np = 3: a chunk size far below the points per rank (several chunks),
 // uneven ownership in scrambled local order, ranks owning no point of some chunks; the Exodus file written
-// chunk by chunk must equal, byte for byte, the one written from whole fields.
+// chunk by chunk (its element blocks from block ids given a chunk at a time) must equal, byte for byte, the
+// one written from whole fields. The variable-width gather and
+// both scatters (checkpoints' direction to and from rank 0) carry every value to its point, zero widths
+// included, and a failing reader or putter ends the exchange on every rank without a hang.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -104,7 +107,12 @@ TEST(ChunkedGather, ChunkedExodusEqualsWholeFieldExodus) {
   pf::ChunkedGather gather(comm, first.gids.data(), static_cast<int>(first.gids.size()), kPoints, kChunk);
   std::unique_ptr<pf::ExodusWriter> chunked, whole;
   if (comm.rank() == 0) {
-    chunked = std::make_unique<pf::ExodusWriter>(base + "_chunked.e", coords(), blocks(), false,
+    pf::BlockRuns runs;  // the block ids a chunk at a time, runs crossing the chunk boundaries
+    const std::vector<int> ids = blocks();
+    for (int begin = 0; begin < kPoints; begin += kChunk)
+      runs.add(ids.data() + begin, static_cast<std::size_t>(std::min(kChunk, kPoints - begin)));
+    EXPECT_EQ(runs.runs().size(), 11u);  // 61 points in runs of 6
+    chunked = std::make_unique<pf::ExodusWriter>(base + "_chunked.e", coords(), runs, false,
                                                  std::vector<std::string>{"Displacement"}, std::vector<std::string>{},
                                                  std::vector<std::string>{"Damage"}, std::vector<std::string>{"E"});
     whole = std::make_unique<pf::ExodusWriter>(base + "_whole.e", coords(), blocks(), false,
@@ -164,6 +172,104 @@ TEST(ChunkedGather, OwnershipThatMissesAPointFailsOnEveryRank) {
   if (comm.rank() == 0) s.gids.pop_back();  // drops cloud index 0
   EXPECT_THROW(pf::ChunkedGather(comm, s.gids.data(), static_cast<int>(s.gids.size()), kPoints, kChunk),
                std::logic_error);
+}
+
+int width(int g) { return g % 5; }  // 0 to 4 values per point: some points have none
+double bondValue(int g, int j) { return 100.0 * g + j + 0.5; }
+
+TEST(ChunkedGather, VariableWidthsGatherInCloudOrder) {
+  const pf::Communicator comm = pf::Communicator::world();
+  const Share s = share(comm, 0);
+  pf::ChunkedGather gather(comm, s.gids.data(), static_cast<int>(s.gids.size()), kPoints, kChunk);
+  const pf::ChunkedGather::VariableField field{
+      [&](int i) { return width(s.gids[i]); },
+      [&](int i, double* out) {
+        for (int j = 0; j < width(s.gids[i]); ++j) out[j] = bondValue(s.gids[i], j);
+      }};
+  int next = 0;
+  gather.gatherVariable(field, [&](int begin, int count, const double* values, std::size_t n) {
+    EXPECT_EQ(begin, next);
+    std::vector<double> expected;
+    for (int g = begin; g < begin + count; ++g)
+      for (int j = 0; j < width(g); ++j) expected.push_back(bondValue(g, j));
+    ASSERT_EQ(n, expected.size());
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), values));
+    next += count;
+  });
+  EXPECT_EQ(next, comm.rank() == 0 ? kPoints : 0);
+}
+
+TEST(ChunkedGather, ScattersReachTheOwnersOnly) {
+  const pf::Communicator comm = pf::Communicator::world();
+  const Share s = share(comm, 0);
+  pf::ChunkedGather gather(comm, s.gids.data(), static_cast<int>(s.gids.size()), kPoints, kChunk);
+  std::vector<int> seen(s.gids.size(), 0);
+  int reads = 0;
+  gather.scatter(
+      3,
+      [&](int begin, int count, double* out) {
+        ++reads;
+        for (int g = begin; g < begin + count; ++g)
+          for (int c = 0; c < 3; ++c) *out++ = value(g, c, 5);
+      },
+      [&](int i, const double* in) {
+        ++seen[i];
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(in[c], value(s.gids[i], c, 5)) << s.gids[i];
+      });
+  EXPECT_EQ(reads, comm.rank() == 0 ? 9 : 0);
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+  std::fill(seen.begin(), seen.end(), 0);
+  gather.scatterVariable(
+      2,
+      [&](int begin, int count, std::vector<double>& msg) {
+        for (int g = begin; g < begin + count; ++g) msg.push_back(width(g));
+        for (int sign : {1, -1})
+          for (int g = begin; g < begin + count; ++g)
+            for (int j = 0; j < width(g); ++j) msg.push_back(sign * bondValue(g, j));
+      },
+      [&](int i, int w, const std::vector<const double*>& blocks) {
+        ++seen[i];
+        const int g = s.gids[i];
+        ASSERT_EQ(w, width(g));
+        for (int j = 0; j < w; ++j) {
+          EXPECT_EQ(blocks[0][j], bondValue(g, j));
+          EXPECT_EQ(blocks[1][j], -bondValue(g, j));
+        }
+      });
+  EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+}
+
+TEST(ChunkedGather, AFailingScatterEndsOnEveryRank) {
+  const pf::Communicator comm = pf::Communicator::world();
+  const Share s = share(comm, 0);
+  pf::ChunkedGather gather(comm, s.gids.data(), static_cast<int>(s.gids.size()), kPoints, kChunk);
+  int reads = 0;
+  auto readFails = [&] {
+    gather.scatter(
+        1,
+        [&](int begin, int, double*) {
+          ++reads;
+          if (begin == 2 * kChunk) throw std::runtime_error("short file");
+        },
+        [](int, const double*) {});
+  };
+  if (comm.rank() == 0)
+    EXPECT_THROW(readFails(), std::runtime_error);
+  else
+    EXPECT_NO_THROW(readFails());
+  EXPECT_EQ(reads, comm.rank() == 0 ? 3 : 0);  // no read after the failure
+  auto putFails = [&] {  // the last rank refuses its first point, the others take theirs
+    gather.scatterVariable(
+        1, [](int, int count, std::vector<double>& msg) { msg.assign(static_cast<std::size_t>(count), 0.0); },
+        [&](int, int, const std::vector<const double*>&) {
+          if (comm.rank() == comm.size() - 1) throw std::runtime_error("bond count differs");
+        });
+  };
+  if (comm.rank() == comm.size() - 1)
+    EXPECT_THROW(putFails(), std::runtime_error);
+  else
+    EXPECT_NO_THROW(putFails());
+  EXPECT_EQ(comm.sum(1.0), comm.size());  // no rank is left waiting
 }
 
 }  // namespace

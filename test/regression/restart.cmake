@@ -37,6 +37,13 @@ foreach(deck bar plate)
   set_tests_properties(restart_${deck}_kill_np1_np1 PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS 1)
   set_tests_properties(restart_${deck}_kill_np2_np1 PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS 2)
 endforeach()
+# Issue 19: the checkpoint passes through rank 0 chunk by chunk both ways (parallel/ChunkedGather). Written at
+# np 1 and restarted at np 2, the plate's per-bond plastic history reaches each rank's bonds by the chunked
+# scatter (np 2 -> 1 above covers the chunked gather of two ranks); the same bounds as np 2 -> 1.
+add_test(NAME restart_plate_kill_np1_np2
+         COMMAND ${PY} ${RST}/run_restart.py kill ${RST}/restart_plate_nox.xml 1 2 ${PERIFORGE_EXE} ${MPIRUN}
+                 -- ${restart_plate_tols} -- ${RST}/plate_np.comp)
+set_tests_properties(restart_plate_kill_np1_np2 PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS 2)
 foreach(np 1 2)
   add_test(NAME restart_refused_np${np}
            COMMAND ${PY} ${RST}/run_restart.py refuse ${RST}/restart_bar.xml ${np} ${PERIFORGE_EXE} ${MPIRUN})
