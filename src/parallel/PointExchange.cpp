@@ -46,8 +46,10 @@ PointCloud exchangePoints(const Communicator& comm, const PointCloud& points, co
   std::vector<int> order(index.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return dest[a] < dest[b]; });
+  // Counts and displacements in points (one MPI datatype of kWidth doubles), so MPI's int counts allow 2^31
+  // points per rank and exchange (the 32-bit id limit) rather than 2^31 doubles.
   std::vector<int> sendCounts(size, 0), recvCounts(size, 0), sendDispl(size, 0), recvDispl(size, 0);
-  for (int d : dest) sendCounts[d] += kWidth;
+  for (int d : dest) ++sendCounts[d];
   MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, mpi);
   for (int r = 1; r < size; ++r) {
     sendDispl[r] = sendDispl[r - 1] + sendCounts[r - 1];
@@ -62,9 +64,13 @@ PointCloud exchangePoints(const Communicator& comm, const PointCloud& points, co
                              static_cast<double>(comm.rank())});
   }
   std::vector<double>().swap(tags);
-  std::vector<double> recv(static_cast<std::size_t>(recvDispl[size - 1]) + recvCounts[size - 1]);
-  MPI_Alltoallv(send.data(), sendCounts.data(), sendDispl.data(), MPI_DOUBLE, recv.data(), recvCounts.data(),
-                recvDispl.data(), MPI_DOUBLE, mpi);
+  std::vector<double> recv(kWidth * (static_cast<std::size_t>(recvDispl[size - 1]) + recvCounts[size - 1]));
+  MPI_Datatype point;
+  MPI_Type_contiguous(kWidth, MPI_DOUBLE, &point);
+  MPI_Type_commit(&point);
+  MPI_Alltoallv(send.data(), sendCounts.data(), sendDispl.data(), point, recv.data(), recvCounts.data(),
+                recvDispl.data(), point, mpi);
+  MPI_Type_free(&point);
   std::vector<double>().swap(send);
 
   const int n = static_cast<int>(recv.size() / kWidth);
