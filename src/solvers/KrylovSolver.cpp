@@ -5,6 +5,7 @@
 #include <BelosTpetraAdapter.hpp>
 #include <Ifpack2_Factory.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <type_traits>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
@@ -120,22 +121,23 @@ KrylovSolver::KrylovSolver(const Model& model, double precBondRadius, const std:
     : impl_(std::make_unique<Impl>()) {
   impl_->where = std::move(where);
   ensureKokkos();
-  const PairRows rows = pairStiffnessRows(model, precBondRadius, shift);
   const auto comm = teuchosComm(model.layout().comm());
-  std::vector<GO> gids(rows.row.begin(), rows.row.end());
-  const Tpetra::global_size_t any = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  impl_->map = Teuchos::rcp(new Map(any, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0, comm));
-  Teuchos::Array<std::size_t> perRow(rows.row.size());
-  for (std::size_t r = 0; r < rows.row.size(); ++r) perRow[r] = rows.offsets[r + 1] - rows.offsets[r];
-  impl_->matrix = Teuchos::rcp(new Matrix(impl_->map, perRow()));
-  std::vector<GO> cols(rows.columns.begin(), rows.columns.end());
-  for (std::size_t r = 0; r < rows.row.size(); ++r) {
-    const std::size_t b = rows.offsets[r], n = perRow[r];
-    impl_->matrix->insertGlobalValues(static_cast<GO>(rows.row[r]), Teuchos::ArrayView<const GO>(cols.data() + b, n),
-                                      Teuchos::ArrayView<const double>(rows.values.data() + b, n));
-  }
+  static_assert(std::is_same<GO, long long>::value, "the pair rows' columns are passed to Tpetra as they are");
+  std::vector<GO> gids;
+  impl_->scale = pairStiffnessRows(
+      model, precBondRadius, shift,
+      [&](const std::vector<long long>& rows, const std::vector<std::size_t>& counts) {
+        gids.assign(rows.begin(), rows.end());
+        const Tpetra::global_size_t any = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+        impl_->map = Teuchos::rcp(new Map(any, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0, comm));
+        Teuchos::Array<std::size_t> perRow(counts.begin(), counts.end());
+        impl_->matrix = Teuchos::rcp(new Matrix(impl_->map, perRow()));
+      },
+      [&](std::size_t r, const long long* columns, const double* values, std::size_t n) {
+        impl_->matrix->insertGlobalValues(gids[r], Teuchos::ArrayView<const GO>(columns, n),
+                                          Teuchos::ArrayView<const double>(values, n));
+      });
   impl_->matrix->fillComplete();
-  impl_->scale = rows.scale;
 }
 
 KrylovSolver::~KrylovSolver() = default;

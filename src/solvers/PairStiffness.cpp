@@ -7,7 +7,10 @@
 
 namespace pf {
 
-PairRows pairStiffnessRows(const Model& model, double radiusFactor, const std::vector<double>* shift) {
+double pairStiffnessRows(
+    const Model& model, double radiusFactor, const std::vector<double>* shift,
+    const std::function<void(const std::vector<long long>& rows, const std::vector<std::size_t>& counts)>& sized,
+    const std::function<void(std::size_t r, const long long* columns, const double* values, std::size_t n)>& row) {
   const DistributedLayout& L = model.layout();
   const BondFamily& fam = L.family();
   const std::vector<int>& gid = L.gids();
@@ -37,53 +40,63 @@ PairRows pairStiffnessRows(const Model& model, double radiusFactor, const std::v
     L.comm().sum(moment, total, 2);
     boost = total[1] > 0 ? total[0] / total[1] : 1.0;
   }
-  PairRows rows;
-  rows.offsets.push_back(0);
+  // Free row (i, a): its diagonal block first, then each kept bond's coupling (the pass that counts and the
+  // pass that emits compute the same entries in the same order).
+  std::vector<long long> cols;
+  std::vector<double> vals;
+  auto freeRow = [&](int i, int a) {
+    cols.clear();
+    vals.clear();
+    for (int d = 0; d < 3; ++d) {
+      cols.push_back(3LL * gid[i] + d);
+      vals.push_back(0.0);
+    }
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      if (!keep[b]) continue;
+      const int j = fam.neighbors[b];
+      double n[3];
+      for (int d = 0; d < 3; ++d) n[d] = (x[3 * j + d] - x[3 * i + d]) / fam.refLength[b];
+      const double k = boost * c[b] * (1.0 + m[i] / m[j]) * V[j];
+      for (int d = 0; d < 3; ++d) {
+        if (n[a] * n[d] == 0.0) continue;  // planar bonds: no z coupling; storing zeros doubled the work
+        vals[d] += k * n[a] * n[d];
+        cols.push_back(3LL * gid[j] + d);
+        vals.push_back(-k * n[a] * n[d]);
+      }
+    }
+    if (shift) vals[a] += (*shift)[3 * i + a];
+  };
+  std::vector<long long> rowIds;
+  std::vector<std::size_t> counts;
   double diagTotal = 0;
   long long diagCount = 0;
-  std::vector<std::size_t> diagAt(3 * owned, 0);  // where each free row's diagonal entry sits
-  for (int i = 0; i < owned; ++i) {
+  for (int i = 0; i < owned; ++i)
     for (int a = 0; a < 3; ++a) {
-      const long long row = 3LL * gid[i] + a;
-      rows.row.push_back(row);
-      if (fixed[3 * i + a]) {  // filled with s below, once s is known
-        rows.columns.push_back(row);
-        rows.values.push_back(0.0);
-        diagAt[3 * i + a] = rows.values.size() - 1;
-        rows.offsets.push_back(rows.columns.size());
+      rowIds.push_back(3LL * gid[i] + a);
+      if (fixed[3 * i + a]) {  // s alone on the diagonal, once s is known
+        counts.push_back(1);
         continue;
       }
-      const std::size_t first = rows.columns.size();
-      for (int d = 0; d < 3; ++d) {
-        rows.columns.push_back(3LL * gid[i] + d);
-        rows.values.push_back(0.0);
-      }
-      for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-        if (!keep[b]) continue;
-        const int j = fam.neighbors[b];
-        double n[3];
-        for (int d = 0; d < 3; ++d) n[d] = (x[3 * j + d] - x[3 * i + d]) / fam.refLength[b];
-        const double k = boost * c[b] * (1.0 + m[i] / m[j]) * V[j];
-        for (int d = 0; d < 3; ++d) {
-          if (n[a] * n[d] == 0.0) continue;  // planar bonds: no z coupling; storing zeros doubled the work
-          rows.values[first + d] += k * n[a] * n[d];
-          rows.columns.push_back(3LL * gid[j] + d);
-          rows.values.push_back(-k * n[a] * n[d]);
-        }
-      }
-      if (shift) rows.values[first + a] += (*shift)[3 * i + a];
-      diagTotal += rows.values[first + a];
+      freeRow(i, a);
+      counts.push_back(cols.size());
+      diagTotal += vals[a];
       ++diagCount;
-      rows.offsets.push_back(rows.columns.size());
     }
-  }
   double in[2] = {diagTotal, static_cast<double>(diagCount)}, out[2];
   L.comm().sum(in, out, 2);
-  rows.scale = out[1] > 0 ? out[0] / out[1] : 1.0;
-  // Prescribed rows: s on the diagonal alone (the constraint x = xbar decouples them).
-  for (int k = 0; k < 3 * owned; ++k)
-    if (fixed[k]) rows.values[diagAt[k]] = rows.scale;
-  return rows;
+  const double scale = out[1] > 0 ? out[0] / out[1] : 1.0;
+  sized(rowIds, counts);
+  std::size_t r = 0;
+  for (int i = 0; i < owned; ++i)
+    for (int a = 0; a < 3; ++a, ++r) {
+      if (fixed[3 * i + a]) {  // the constraint x = xbar decouples a prescribed row
+        row(r, &rowIds[r], &scale, 1);
+        continue;
+      }
+      freeRow(i, a);
+      row(r, cols.data(), vals.data(), cols.size());
+    }
+  return scale;
 }
 
 }  // namespace pf

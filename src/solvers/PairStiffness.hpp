@@ -5,21 +5,20 @@
 // the family's second moment; the shift (a Newmark step's rho / (beta dt^2)) on the free diagonal; a
 // prescribed row holds the mean free diagonal s alone. Global dof ids are 3 * point + component.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace pf {
 
 class Model;
 
-struct PairRows {
-  std::vector<long long> row;         // global dof id of each owned row, in owned order
-  std::vector<std::size_t> offsets;   // row r's entries: [offsets[r], offsets[r + 1]); a column may repeat (sum)
-  std::vector<long long> columns;
-  std::vector<double> values;
-  double scale = 1.0;                 // s: the mean free diagonal over all ranks
-};
-
-// Collective (two reductions). shift: 3 per owned node, or null.
-PairRows pairStiffnessRows(const Model& model, double radiusFactor, const std::vector<double>* shift);
+// Collective (two reductions). shift: 3 per owned node, or null. Streams the rows, so that no copy of the
+// matrix is held beside the one the caller builds: sized(rows, counts) once with every owned row's global
+// dof id (owned order) and entry count, then row(r, columns, values, n) for every owned row in that order
+// (a column may repeat: sum). Returns s, the mean free diagonal over all ranks.
+double pairStiffnessRows(
+    const Model& model, double radiusFactor, const std::vector<double>* shift,
+    const std::function<void(const std::vector<long long>& rows, const std::vector<std::size_t>& counts)>& sized,
+    const std::function<void(std::size_t r, const long long* columns, const double* values, std::size_t n)>& row);
 
 }  // namespace pf
