@@ -7,6 +7,34 @@
 
 namespace pf {
 
+namespace {
+
+// Which bonds the matrix keeps, and one global stiffening factor (boost) so that the kept bonds carry the
+// second moment sum(k r^2) of all bonds: the smooth modes, which the Krylov solve needs the preconditioner
+// for, see the same stiffness. Collective (one reduction).
+std::vector<char> keptBonds(const Model& model, const std::vector<double>& c, double radiusFactor, double& boost) {
+  const DistributedLayout& L = model.layout();
+  const BondFamily& fam = L.family();
+  const std::vector<double>& V = model.volume();
+  std::vector<char> keep(fam.neighbors.size(), 1);
+  double moment[2] = {0, 0}, total[2];
+  for (int i = 0; i < model.numOwned(); ++i) {
+    double shortest = std::numeric_limits<double>::max();
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) shortest = std::min(shortest, fam.refLength[b]);
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+      const double r = fam.refLength[b], kr2 = c[b] * V[fam.neighbors[b]] * r * r;
+      keep[b] = r <= radiusFactor * shortest * (1 + 1e-9);
+      moment[0] += kr2;
+      if (keep[b]) moment[1] += kr2;
+    }
+  }
+  L.comm().sum(moment, total, 2);
+  boost = total[1] > 0 ? total[0] / total[1] : 1.0;
+  return keep;
+}
+
+}  // namespace
+
 double pairStiffnessRows(
     const Model& model, double radiusFactor, const std::vector<double>* shift,
     const std::function<void(const std::vector<long long>& rows, const std::vector<std::size_t>& counts)>& sized,
@@ -20,26 +48,8 @@ double pairStiffnessRows(
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double> c = model.pairStiffness();
   const int owned = model.numOwned();
-  // Which bonds the matrix keeps, and one global stiffening factor so that the kept bonds carry the second
-  // moment sum(k r^2) of all bonds: the smooth modes, which the Krylov solve needs the preconditioner for,
-  // see the same stiffness.
-  std::vector<char> keep(fam.neighbors.size(), 1);
   double boost = 1.0;
-  {
-    double moment[2] = {0, 0}, total[2];
-    for (int i = 0; i < owned; ++i) {
-      double shortest = std::numeric_limits<double>::max();
-      for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) shortest = std::min(shortest, fam.refLength[b]);
-      for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-        const double r = fam.refLength[b], kr2 = c[b] * V[fam.neighbors[b]] * r * r;
-        keep[b] = r <= radiusFactor * shortest * (1 + 1e-9);
-        moment[0] += kr2;
-        if (keep[b]) moment[1] += kr2;
-      }
-    }
-    L.comm().sum(moment, total, 2);
-    boost = total[1] > 0 ? total[0] / total[1] : 1.0;
-  }
+  const std::vector<char> keep = keptBonds(model, c, radiusFactor, boost);
   // Free row (i, a): its diagonal block first, then each kept bond's coupling (the pass that counts and the
   // pass that emits compute the same entries in the same order).
   std::vector<long long> cols;
