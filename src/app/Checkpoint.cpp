@@ -60,21 +60,21 @@ struct Streamed {
 };
 
 // The per-point and per-bond sections, in the order every rank gathers them (carry scalars go to small).
-// bondCounts: storage for the per-point bond counts, alive while the sections are gathered.
 std::vector<Streamed> streamedSections(const ChunkedGather& points, const ChunkedGather& bondPoints,
                                        const GlobalBondOrder& bonds, Model& model,
                                        const StepReport& report, const std::vector<double>& u,
-                                       const std::vector<double>& v, std::vector<double>& bondCounts,
-                                       CheckpointData& small) {
+                                       const std::vector<double>& v, CheckpointData& small) {
   std::vector<Streamed> streamed;
   const double numGlobal = model.layout().numGlobal();
-  auto pointSection = [&](const std::string& name, const double* values, int ncomp) {
-    streamed.push_back({name, numGlobal * ncomp, [&points, values, ncomp](const Sink& sink) {
-                          points.gather({{[=](int i, double* out) { std::copy_n(values + ncomp * i, ncomp, out); }, ncomp}},
-                                        [&](int, int count, const std::vector<const double*>& chunk) {
-                                          sink(chunk[0], static_cast<std::size_t>(ncomp) * count);
-                                        });
+  auto fieldSection = [&](const std::string& name, const ChunkedGather::Field& field) {
+    streamed.push_back({name, numGlobal * field.ncomp, [&points, field](const Sink& sink) {
+                          points.gather({field}, [&](int, int count, const std::vector<const double*>& chunk) {
+                            sink(chunk[0], static_cast<std::size_t>(field.ncomp) * count);
+                          });
                         }});
+  };
+  auto pointSection = [&](const std::string& name, const double* values, int ncomp) {
+    fieldSection(name, {[=](int i, double* out) { std::copy_n(values + ncomp * i, ncomp, out); }, ncomp});
   };
   auto bondSection = [&](const std::string& name, const ChunkedGather::VariableField& field) {
     streamed.push_back({name, bonds.total(), [&bondPoints, field](const Sink& sink) {
@@ -96,9 +96,7 @@ std::vector<Streamed> streamedSections(const ChunkedGather& points, const Chunke
       bondSection("state/" + s.name, bonds.values(committed));
   }
   const BondFamily& fam = model.layout().family();
-  bondCounts.resize(static_cast<std::size_t>(fam.numOwned()));
-  for (int i = 0; i < fam.numOwned(); ++i) bondCounts[i] = fam.offsets[i + 1] - fam.offsets[i];
-  pointSection("bonds/counts", bondCounts.data(), 1);
+  fieldSection("bonds/counts", {[&fam](int i, double* out) { *out = fam.offsets[i + 1] - fam.offsets[i]; }, 1});
   bondSection("bonds/neighbors", bonds.neighbors());
   return streamed;
 }
@@ -158,8 +156,7 @@ void Checkpointer::write(const StepReport& report, const std::vector<double>& u,
                                    static_cast<double>(report.step), report.time};
   for (const auto& [item, text] : fingerprint_) small.bytes["fingerprint/" + item] = text;
   for (const auto& m : managers_) m->saveTo(small);
-  std::vector<double> bondCounts;
-  const std::vector<Streamed> streamed = streamedSections(points_, bondPoints_, bonds_, model, report, u, v, bondCounts, small);
+  const std::vector<Streamed> streamed = streamedSections(points_, bondPoints_, bonds_, model, report, u, v, small);
 
   const std::string& file = deck_.restart.checkpointFile;
   std::unique_ptr<CheckpointWriter> out;
