@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "CylinderGenerator.hpp"
+#include "ExodusMesh.hpp"
 #include "core/InputError.hpp"
 #include "core/Words.hpp"
 
@@ -264,6 +265,7 @@ PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& i
     for (int i = 0; i < c.size(); ++i) c.gid[i] = i;
     return c;
   }
+  if (d.type == T::Exodus) return readExodusSlab(d, inputFile, part, parts);
   // Two passes of the generator: the first counts the cloud, the second keeps this part's slab of it.
   auto run = [&](PointSink& sink) {
     switch (d.type) {
@@ -271,7 +273,8 @@ PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& i
       case T::RectangleWithHoles:
       case T::BoxWithHoles: generator(d, inputFile, sink); break;
       case T::Cylinder: cylinder(d, inputFile, sink); break;
-      case T::TextFile: break;
+      case T::TextFile:
+      case T::Exodus: break;
     }
   };
   PointCloud counted;

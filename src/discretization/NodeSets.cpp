@@ -136,7 +136,8 @@ std::map<std::string, std::vector<int>> resolveNodeSets(const std::vector<NodeSe
     sets[name] = std::move(ids);
   }
   for (const auto& [name, ids] : cloud.generatedNodeSets)
-    if (reduce.sum(static_cast<double>(ids.size())) == 0) fail(inputFile, "Discretization", "generated node set '" + name + "' is empty");
+    if (reduce.sum(static_cast<double>(ids.size())) == 0)
+      fail(inputFile, "Discretization", "node set '" + name + "' of the discretization holds no point");
   return sets;
 }
 

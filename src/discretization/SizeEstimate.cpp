@@ -9,6 +9,7 @@
 
 #include "CylinderGenerator.hpp"
 #include "Discretization.hpp"
+#include "ExodusMesh.hpp"
 #include "core/InputError.hpp"
 
 namespace pf {
@@ -137,8 +138,23 @@ TextMeshScan scanMesh(const Deck& deck) {
 
 // A mesh file has no grid: the family is that of a cubic lattice with the mean cell volume, or for a flat
 // mesh (all z equal) of a square lattice filling the bounding rectangle.
+// An Exodus mesh: its element count and node box; the total volume is taken as the box's (an upper bound, so
+// the estimate's spacing errs large and its family small for a body with holes).
+TextMeshScan scanExodus(const Deck& deck) {
+  const ExodusExtent x = exodusExtent(deck.discretization, deck.file);
+  TextMeshScan s;
+  s.points = static_cast<double>(x.elements);
+  s.volume = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    s.lo[a] = x.lo[a], s.hi[a] = x.hi[a];
+    if (x.hi[a] > x.lo[a]) s.volume *= x.hi[a] - x.lo[a];
+  }
+  return s;
+}
+
 SizeEstimate meshFileEstimate(const Deck& deck) {
-  const TextMeshScan s = scanMesh(deck);
+  const TextMeshScan s =
+      deck.discretization.type == DiscretizationSpec::Type::Exodus ? scanExodus(deck) : scanMesh(deck);
   SizeEstimate e;
   e.points = s.points;
   e.meshFile = true;
@@ -198,7 +214,7 @@ double latticeFamily(const std::array<double, 3>& cell, const std::array<double,
 SizeEstimate estimateSize(const Deck& deck) {
   const DiscretizationSpec& d = deck.discretization;
   SizeEstimate e;
-  if (d.type == DiscretizationSpec::Type::TextFile) {
+  if (d.type == DiscretizationSpec::Type::TextFile || d.type == DiscretizationSpec::Type::Exodus) {
     e = meshFileEstimate(deck);
   } else {
     const GridShape g = d.type == DiscretizationSpec::Type::QuickGrid ? quickGridShape(d)
@@ -263,7 +279,9 @@ std::string bytesText(double bytes) {
 void checkSize(const Deck& deck, const SizeEstimate& e, int np, double limit, const std::string& limitName) {
   const DiscretizationSpec& d = deck.discretization;
   const std::string change = d.type == DiscretizationSpec::Type::QuickGrid  ? "fewer 'Number Points'"
-                             : d.type == DiscretizationSpec::Type::TextFile ? "a coarser mesh"
+                             : d.type == DiscretizationSpec::Type::TextFile ||
+                                       d.type == DiscretizationSpec::Type::Exodus
+                                   ? "a coarser mesh"
                                                                              : "a larger 'Spacing'";
   char counts[160];
   std::snprintf(counts, sizeof counts, "%.4g points, %.4g bonds (%.4g per point)", e.points, e.bonds, e.family);

@@ -22,7 +22,7 @@ struct HoleSpec {
 };
 
 struct DiscretizationSpec {
-  enum class Type { QuickGrid, TextFile, RectangleWithHoles, BoxWithHoles, Cylinder };
+  enum class Type { QuickGrid, TextFile, RectangleWithHoles, BoxWithHoles, Cylinder, Exodus };
   Type type = Type::QuickGrid;
   Influence influence = Influence::One;
   bool partialVolume = false;
@@ -33,12 +33,15 @@ struct DiscretizationSpec {
   std::array<double, 3> origin{};
   std::array<double, 3> length{};
   std::array<int, 3> count{};
-  // Text File: the mesh file, resolved against the deck's directory.
+  // Text File, Exodus: the mesh file, resolved against the deck's directory.
   std::string meshFile;
+  // Exodus: the genesis file's node-set names (read from its header when the deck is parsed), and its element count.
+  std::vector<std::string> meshNodeSets;
+  long long meshElements = 0;
   // Rectangle / Box With Holes (origin and length above; z unused for the rectangle).
   double spacing = 0.0;
   bool gridNodes = false;           // "Grid" = "Nodes" (else cell centres)
-  double thickness = 0.0;           // rectangle only
+  double thickness = 0.0;           // rectangle; Exodus meshes of 2D elements
   std::vector<HoleSpec> holes;
   std::vector<std::string> layers;  // faces with a fictitious layer: "Left", "Right", ...
   double layerWidth = 0.0;          // "Layer Width", or the largest block horizon

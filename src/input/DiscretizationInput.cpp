@@ -1,6 +1,7 @@
 // The "Discretization" list -> DiscretizationSpec.
 #include <cmath>
 
+#include "ExodusFile.hpp"
 #include "Input.hpp"
 #include "Sections.hpp"
 
@@ -10,7 +11,7 @@ namespace {
 
 using S = ParameterSpec;
 const std::vector<std::string> kTypes = {"PdQuickGrid", "Text File", "Rectangle With Holes", "Box With Holes",
-                                         "Cylinder"};
+                                         "Cylinder", "Exodus"};
 
 // "x", "y", "z" or three numbers, not all zero -> a unit vector.
 std::array<double, 3> holeAxis(const std::string& a, const std::string& file, const std::string& path) {
@@ -93,6 +94,12 @@ std::vector<ParameterSpec> discretizationSpecs(const std::string& type) {
               "(regular grids only)").byDefault("false")};
   if (type == "Text File")
     s.push_back(S::text("Input Mesh File", "file of lines `x y z block_id volume`; `#` starts a comment").need());
+  if (type == "Exodus") {
+    s.push_back(S::text("Input Mesh File", "Exodus II genesis file: one point per element at its centroid with its "
+                                           "volume; blocks `block_<id>`; the file's node sets by name").need());
+    s.push_back(S::real("Thickness", "out-of-plane thickness of a mesh of 2D elements (QUAD, TRI): volume = area·"
+                                     "Thickness").positive());
+  }
   if (type == "Rectangle With Holes" || type == "Box With Holes") {
     const bool box = type == "Box With Holes";
     for (const char* a : {"X", "Y", "Z"}) {
@@ -148,7 +155,8 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
     fail(file, path, "'Type' = '" + type + "' is not one of " + joinNames(kTypes));
   const std::vector<std::string> sublists = type == "PdQuickGrid" ? std::vector<std::string>{"TensorProduct3DMeshGenerator"}
-                                           : type == "Text File" || type == "Cylinder" ? std::vector<std::string>{}
+                                           : type == "Text File" || type == "Cylinder" || type == "Exodus"
+                                               ? std::vector<std::string>{}
                                                                    : std::vector<std::string>{"Holes"};
   const ParameterValues v = readList(d, discretizationSpecs(type), sublists, file, path);
   DiscretizationSpec s;
@@ -172,6 +180,17 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   } else if (type == "Text File") {
     s.type = DiscretizationSpec::Type::TextFile;
     s.meshFile = resolvePath(v.text("Input Mesh File"), dir);
+  } else if (type == "Exodus") {
+    s.type = DiscretizationSpec::Type::Exodus;
+    s.meshFile = resolvePath(v.text("Input Mesh File"), dir);
+    s.thickness = v.get("Thickness", 0.0);
+    const ExodusFile mesh(s.meshFile, file);  // the header only: node-set names for the conditions to name
+    for (const ExodusNodeSet& n : mesh.summary().nodeSets)
+      if (n.nodes > 0) s.meshNodeSets.push_back(n.name);  // an empty set names no element (the reader skips it)
+    if (s.meshNodeSets.size() > 50)  // the point exchange carries set membership as bits of one double
+      fail(file, path + "/Input Mesh File", "the mesh '" + s.meshFile + "' has " + std::to_string(s.meshNodeSets.size()) +
+                                                " non-empty node sets; Periforge reads at most 50");
+    s.meshElements = mesh.summary().elements;
   } else {
     s.type = type == "Box With Holes" ? DiscretizationSpec::Type::BoxWithHoles
                                       : DiscretizationSpec::Type::RectangleWithHoles;
@@ -180,9 +199,9 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path);
   s.partialVolume = v.flag("Partial Volume");
   s.boxNeighbourhood = s.type == DiscretizationSpec::Type::QuickGrid && !v.has("NeighborhoodType") && !s.partialVolume;
-  if (s.partialVolume && s.type == DiscretizationSpec::Type::TextFile)
+  if (s.partialVolume && (s.type == DiscretizationSpec::Type::TextFile || s.type == DiscretizationSpec::Type::Exodus))
     fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "
-                     "Holes): a Text File discretization has no cells to intersect with the horizon");
+                     "Holes): a " + type + " discretization has no cells to intersect with the horizon");
   return s;
 }
 
@@ -195,6 +214,7 @@ void applyDefaultLayerWidth(DiscretizationSpec& d, double maxHorizon, const std:
 std::vector<std::string> generatedNodeSetNames(const DiscretizationSpec& d) {
   std::vector<std::string> out;
   for (const std::string& f : d.layers) out.push_back(f + " Layer");
+  out.insert(out.end(), d.meshNodeSets.begin(), d.meshNodeSets.end());
   return out;
 }
 

@@ -31,6 +31,7 @@ std::vector<ParameterTable> parameterTables() {
       {"discretization", "Discretization (every type)", discretizationSpecs("")},
       {"pdquickgrid", "Discretization/TensorProduct3DMeshGenerator (Type = PdQuickGrid)", quickGridSpecs()},
       {"text-file", "Discretization (Type = Text File), besides the common ones", {}},
+      {"exodus", "Discretization (Type = Exodus), besides the common ones", {}},
       {"rectangle", "Discretization (Type = Rectangle With Holes), besides the common ones", {}},
       {"box", "Discretization (Type = Box With Holes), besides the common ones", {}},
       {"cylinder", "Discretization (Type = Cylinder), besides the common ones", {}},
@@ -49,7 +50,7 @@ std::vector<ParameterTable> parameterTables() {
       {"restart", "Restart", restartSpecs()}};
   const std::size_t common = discretizationSpecs("").size();
   for (auto& [key, type] : std::vector<std::pair<std::string, std::string>>{
-           {"text-file", "Text File"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"},
+           {"text-file", "Text File"}, {"exodus", "Exodus"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"},
                                              {"cylinder", "Cylinder"}})
     for (ParameterTable& x : t)
       if (x.key == key) {

@@ -3,6 +3,25 @@
 set(PY /usr/bin/python3)
 set(REG ${CMAKE_CURRENT_SOURCE_DIR}/regression)
 
+# Tests whose command names a file under PERIFORGE_SHARED_DIR (third-party reference data, absent from a
+# user's clone) run through needs_shared: skipped with one line without the data, failed instead when
+# PERIFORGE_REQUIRE_SHARED=1 (.ci/run). periforge_shared_guard sets OUT to the wrapper (or to nothing).
+function(periforge_shared_guard out)
+  set(${out} "" PARENT_SCOPE)
+  foreach(arg ${ARGN})
+    string(FIND "${arg}" "${PERIFORGE_SHARED_DIR}" at)
+    if(at EQUAL 0)
+      set(${out} ${CMAKE_CURRENT_SOURCE_DIR}/regression/shared/needs_shared ${PERIFORGE_SHARED_DIR} PARENT_SCOPE)
+      return()
+    endif()
+  endforeach()
+endfunction()
+function(periforge_mark_shared name guard)
+  if(guard)
+    set_tests_properties(${name} PROPERTIES SKIP_RETURN_CODE 77 LABELS "regression;shared")
+  endif()
+endfunction()
+
 # periforge_run(NAME DECK NP [EXE exe] [LAUNCHER cmd...]): runs DECK at NP ranks in
 # build/test/regression/NAME as a fixture; EXE replaces periforge, LAUNCHER runs before mpirun.
 function(periforge_run name deck np)
@@ -12,13 +31,17 @@ function(periforge_run name deck np)
   endif()
   set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
   file(MAKE_DIRECTORY ${wd})
-  add_test(NAME ${name} COMMAND ${run_LAUNCHER} ${MPIRUN} -np ${np} ${run_EXE} ${deck} WORKING_DIRECTORY ${wd})
+  periforge_shared_guard(guard ${deck})
+  add_test(NAME ${name} COMMAND ${guard} ${run_LAUNCHER} ${MPIRUN} -np ${np} ${run_EXE} ${deck} WORKING_DIRECTORY ${wd})
   set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name} LABELS "regression" PROCESSORS ${np})
+  periforge_mark_shared(${name} "${guard}")
 endfunction()
 
 function(periforge_check name fixtures)
-  add_test(NAME ${name} COMMAND ${ARGN})
+  periforge_shared_guard(guard ${ARGN})
+  add_test(NAME ${name} COMMAND ${guard} ${ARGN})
   set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED "${fixtures}" LABELS "regression")
+  periforge_mark_shared(${name} "${guard}")
 endfunction()
 
 # Patch test: affine field reproduced in the interior, np = 1 and 2.
@@ -91,9 +114,13 @@ add_test(NAME finite_state_errors COMMAND ${PY} ${REG}/errors/run_finite_cases.p
 set_tests_properties(finite_state_errors PROPERTIES LABELS "regression" PROCESSORS 2 TIMEOUT 600)
 
 # Tool self-tests.
-add_test(NAME exodiff_self_test COMMAND ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py --self-test)
+# exodiff's self-test compares Peridigm's gold files with each other (shared reference data: skipped without it).
+add_test(NAME exodiff_self_test COMMAND ${CMAKE_COMMAND} -E env PF_PERIDIGM_REF=${PERIFORGE_SHARED_DIR}/reference/peridigm
+  ${CMAKE_CURRENT_SOURCE_DIR}/regression/shared/needs_shared ${PERIFORGE_SHARED_DIR}/reference/peridigm
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py --self-test)
 add_test(NAME compare_csv_self_test COMMAND ${PY} ${PROJECT_SOURCE_DIR}/scripts/compare_csv --self-test)
 set_tests_properties(exodiff_self_test compare_csv_self_test PROPERTIES LABELS "tools")
+set_tests_properties(exodiff_self_test PROPERTIES LABELS "tools;shared" SKIP_RETURN_CODE 77)
 
 # Tolerances of every coarse plate history against its gold (plate.cmake, examples.cmake).
 # Measured on the isotropic plate (plate.cmake) as np = 2 vs the np = 1 gold:

@@ -49,7 +49,6 @@ periforge_check(plate_iso_coarse_np2_vs_fe plate_iso_coarse_np2
 # checked on its stored history docs/data/plate_iso_paper.csv against the FE reference: F_x within 1.81 %
 # at each of the 108 steps where |F_FE| > 10 % of its peak (measured 1.80 % at step 37), residuals within 3 %
 # (measured -1.2 / +2.4 / -0.2 %). Bounds: the quoted numbers rounded up at their last digit.
-add_test(NAME plate_iso_paper_history_vs_fe COMMAND ${PY} ${PROJECT_SOURCE_DIR}/scripts/validate_plate
+periforge_check(plate_iso_paper_history_vs_fe "" ${PY} ${PROJECT_SOURCE_DIR}/scripts/validate_plate
   ${PROJECT_SOURCE_DIR}/docs/data/plate_iso_paper.csv --ref-dir ${PERIFORGE_SHARED_DIR}/reference/calculix
   --only fx,residual --fx-tol 0.0181 --residual-tol 0.03)
-set_tests_properties(plate_iso_paper_history_vs_fe PROPERTIES LABELS "regression")
