@@ -75,7 +75,8 @@ PF_INLINE double nodeDilatation(const FamilyView& fam, const OsbConstants& c, in
   const int b0 = fam.offsets[i];
   const double sum =
       osb::dilatationSum<Unit>(fam.influence + b0, fam.refLength + b0, sc.len, ep, sc.vj, n, osb::chunksStayInBlock(fam, i));
-  return c.k * c.D * sum / fam.weightedVolume[i];
+  // A point without bonds (m = 0) has no dilatation: 0, as Peridigm writes, not 0/0.
+  return n > 0 ? c.k * c.D * sum / fam.weightedVolume[i] : 0.0;
 }
 
 // Adds node i's elastic bond forces (Eqs. 7-13) from its gathered family and its dilatation.
@@ -163,7 +164,8 @@ void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const doub
       const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
       sum += fam.influence[b] * ed * ed * vj;
     }
-    const double W = 0.5 * kappa * theta[i] * theta[i] + 0.5 * alpha / fam.weightedVolume[i] * sum;
+    const double m = fam.weightedVolume[i];  // 0 for a point without bonds, whose sum is 0 too
+    const double W = 0.5 * kappa * theta[i] * theta[i] + (m > 0.0 ? 0.5 * alpha / m * sum : 0.0);
     energy[i] = W * fam.volume[i];
   }
 }

@@ -10,7 +10,7 @@ const std::vector<std::string>& coreVectorFields() {
 
 const std::vector<std::string>& coreScalarFields() {
   static const std::vector<std::string> v = {"Weighted_Volume", "Element_Id", "Proc_Num", "Number_Of_Neighbors",
-                                             "Volume", "Horizon", "Damage"};
+                                             "Volume", "Horizon", "Damage", "Radius"};
   return v;
 }
 

@@ -37,7 +37,7 @@ void checkVariable(const std::string& var, bool dynamic, const std::string& file
 std::vector<std::string> outputVariables(const PL& v, bool dynamic, const std::string& file, const std::string& path) {
   // Peridigm fields its regression decks request that Periforge does not compute: named as such rather
   // than as unknown, so the deck's author knows the request was understood.
-  for (const char* n : {"Strain_Energy", "Radius", "Neighborhood_Volume"})
+  for (const char* n : {"Strain_Energy", "Neighborhood_Volume"})
     if (v.isParameter(n)) fail(file, path, std::string("Peridigm's output variable '") + n + "' is not supported by Periforge");
   std::vector<ParameterSpec> specs;
   for (const std::string& n : knownVariables()) specs.push_back(S::flag(n));

@@ -59,8 +59,18 @@ std::vector<double> timeList(const ParameterValues& q, const std::string& file, 
 }  // namespace
 
 std::vector<ParameterSpec> solverListSpecs() {
+  // Peridigm's two list-level options of its implicit solvers are accepted for its decks; neither changes
+  // Periforge's answer (docs/input.md, "Solver"): the preconditioner is always Periforge's pair stiffness (or
+  // none, by the Linear Solver's `Preconditioner`), and a solver's first step always starts from the previous
+  // solver's end state (Peridigm's own gold files for `Initialize Predictor From Previous Solver` true and false
+  // are identical).
   return {S::flag("Verbose", "accepted (Peridigm's)"), S::real("Initial Time", "start time").byDefault("0"),
-          S::real("Final Time", "end time, > `Initial Time` (not with QuasiStatic `Time Steps`)")};
+          S::real("Final Time", "end time, > `Initial Time` (not with QuasiStatic `Time Steps`)"),
+          S::text("Peridigm Preconditioner", "Peridigm's preconditioner matrix for NOX; accepted, Periforge's is its "
+                                             "pair-stiffness matrix whatever the value")
+              .oneOf({"Full Tangent", "Block 3x3", "None"}),
+          S::flag("Initialize Predictor From Previous Solver",
+                  "Peridigm's; accepted: each solver starts from the previous one's end state either way")};
 }
 
 SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& path) {

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "ListReader.hpp"
+#include "core/Log.hpp"
 #include "core/Words.hpp"
 
 namespace pf {
@@ -57,15 +58,22 @@ void checkValue(const std::string& type, const std::string& raw, const std::stri
 }
 
 void walk(const Teuchos::XMLObject& list, const std::string& file, const std::string& path) {
-  std::set<std::string> names;
+  std::set<std::string> names, warned;
   for (int i = 0; i < list.numChildren(); ++i) {
     const Teuchos::XMLObject& c = list.getChild(i);
     if (c.getTag() != "Parameter" && c.getTag() != "ParameterList") continue;
     if (!c.hasAttribute("name")) continue;  // Teuchos reports it
     const std::string name = c.getAttribute("name");
     checkText(name, c.getTag() == "Parameter" ? "parameter name" : "sub-list name", file, path);
-    if (!names.insert(name).second)
-      fail(file, path, "'" + name + "' is given twice (a deck names each parameter or sub-list once)");
+    // A parameter given twice: Teuchos keeps the last value, and Peridigm's decks rely on it (two of its
+    // regression decks repeat one), so it is read that way, with a warning. A sub-list given twice would be
+    // merged entry by entry, which no deck means: still an error.
+    if (!names.insert(name).second) {
+      if (c.getTag() == "ParameterList")
+        fail(file, path, "sub-list '" + name + "' is given twice (a deck names each sub-list once)");
+      if (warned.insert(name).second)
+        warn(file + ": " + path + ": '" + name + "' is given twice; the last value is used (as Teuchos reads it)");
+    }
     if (c.getTag() == "ParameterList") {
       walk(c, file, path == "top level" ? name : path + "/" + name);
     } else if (c.hasAttribute("type") && c.hasAttribute("value")) {

@@ -122,34 +122,40 @@ void OutputManager::onRoot(const std::function<void()>& write, bool everyRank) {
 }
 
 // The names are known to the input layer; whether this run's materials compute them is known here.
+// Collective: a rank holds only its own blocks' materials, so the question is whether any rank's do (a
+// rank-local answer stopped one rank while the others went on and waited for it). Points of a material
+// without the variable write 0 (elementScalar).
 void OutputManager::requireComputed(const std::string& var, const std::string& where) const {
   if (contains(kVectors, var) || contains(kCoreScalars, var)) return;
   const StateStore& state = model_.state();
-  if (state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node) {
+  const bool here = state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node;
+  if (model_.layout().comm().max(here ? 1.0 : 0.0) == 0.0)
+    throw InputError(inputFile_ + ": " + where + ": '" + var + "' is not computed by any material of this run");
+  if (here)
     for (const BlockModel& b : model_.blocks()) b.material->enableOutput(var);
-    return;
-  }
-  throw InputError(inputFile_ + ": " + where + ": '" + var + "' is not computed by any material of this run");
 }
 
 // A global summed from a node field (core/OutputFields.hpp) needs that field on every node that can carry it:
 // a material field from every block's material (a block without it would drop out of the sum silently).
+// Collective (each rank checks its own blocks; a failure on one is every rank's error).
 void OutputManager::requireGlobal(const std::string& var, const std::string& where) const {
   const char* field = globalSourceField(var);
   if (!field) return;
   const std::string f = field;
-  if (f == "Rigid_Wall_Energy_Loss") {
-    if (model_.rigidWalls().empty())
-      throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs a Rigid Wall boundary condition");
-    return;
-  }
-  for (const BlockModel& b : model_.blocks()) {
-    bool declared = false;
-    for (const StateSpec& s : b.material->stateSpecs()) declared = declared || (s.name == f && s.where == Location::Node);
-    if (!declared)
-      throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs '" + f + "' from every material, and material '" +
-                       b.materialName + "' (" + b.name + ") does not compute it");
-  }
+  collectively(model_.layout().comm(), [&] {
+    if (f == "Rigid_Wall_Energy_Loss") {
+      if (model_.rigidWalls().empty())
+        throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs a Rigid Wall boundary condition");
+      return;
+    }
+    for (const BlockModel& b : model_.blocks()) {
+      bool declared = false;
+      for (const StateSpec& s : b.material->stateSpecs()) declared = declared || (s.name == f && s.where == Location::Node);
+      if (!declared)
+        throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs '" + f + "' from every material, and material '" +
+                         b.materialName + "' (" + b.name + ") does not compute it");
+    }
+  });
   for (const BlockModel& b : model_.blocks()) b.material->enableOutput(f);
 }
 
@@ -295,10 +301,13 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   // Damage: set by the kernels of blocks with a damage model; 0 where nothing can break (as Peridigm).
   if (var == "Damage") return model_.state().has("Damage") ? model_.state().committed("Damage")[i] : 0.0;
   if (var == "Volume") return model_.volume()[i];
+  if (var == "Radius") return std::cbrt(3.0 * model_.volume()[i] / (4.0 * M_PI));  // Peridigm's: the sphere of the volume
   if (var == "Horizon")  // the horizon of the node's block
     for (const BlockModel& b : model_.blocks())
       if (i >= b.begin && i < b.end) return b.horizon;
-  return model_.state().committed(var)[i];
+  // A variable some block's material computes (requireComputed) and this rank's blocks do not: 0, as at np 1
+  // for the points of the other materials.
+  return model_.state().has(var) ? model_.state().committed(var)[i] : 0.0;
 }
 
 void OutputManager::onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,

@@ -61,6 +61,10 @@ LinearSolverChoice linearSolverChoice(Teuchos::ParameterList& ls, const std::str
     if (ls.isSublist("ML"))
       throw InputError(at + "the 'ML' sub-list is not read since ML gave way to MueLu (issue 20); give MueLu's "
                        "parameter names in a 'MueLu' sub-list");
+  } else if (type == "AztecOO") {
+    // Peridigm's "AztecOO": AztecOO's own domain-decomposition ILU, which Ifpack2's RILUK replaces.
+    c.preconditioner = LinearSolverChoice::Preconditioner::Ifpack2;
+    c.ifpack2Type = "RILUK";
   } else if (type == "New Ifpack" || type == "Ifpack2") {
     c.preconditioner = LinearSolverChoice::Preconditioner::Ifpack2;
     c.ifpack2Type = ls.get<std::string>("Ifpack Preconditioner", "ILU");
@@ -72,7 +76,7 @@ LinearSolverChoice linearSolverChoice(Teuchos::ParameterList& ls, const std::str
   } else if (type == "None") {
     c.preconditioner = LinearSolverChoice::Preconditioner::None;
   } else {
-    throw InputError(at + "'Preconditioner' = '" + type + "': use ML (MueLu), New Ifpack (Ifpack2) or None");
+    throw InputError(at + "'Preconditioner' = '" + type + "': use ML (MueLu), New Ifpack (Ifpack2), AztecOO (Ifpack2's ILU) or None");
   }
   return c;
 }

@@ -16,7 +16,9 @@ std::vector<ParameterSpec> commonSpecs() {
           S::real("Absolute Tolerance", "residual force-density norm that ends a step; given alone (without "
                                         "`Relative Tolerance`) it is the only test").positive(),
           S::integer("Maximum Solver Iterations", "Newton iterations per (sub)step").byDefault("30").atLeast(1),
-          S::flag("Verbose", "print NOX's residual history").byDefault("false")};
+          S::flag("Verbose", "print NOX's residual history").byDefault("false"),
+          S::integer("Max Age Of Prec", "Peridigm's preconditioner age; accepted: Periforge builds its pair-stiffness "
+                                        "preconditioner once, from the reference configuration, so nothing ages")};
 }
 
 std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passThrough) {
@@ -80,6 +82,9 @@ SolverEntry NoxQuasiStaticSolver::peridigmEntry() {
   e.parameters.insert(e.parameters.begin(),
                       S::integer("Number of Load Steps", "n (or `Time Steps` without the list's `Final Time`)").atLeast(1));
   e.parameters.insert(e.parameters.begin() + 1, S::text("Time Steps", "the load times, the first being the initial time"));
+  e.parameters.push_back(S::text("Belos Linear Solver", "Peridigm's Krylov method; accepted, Periforge's is GMRES (each "
+                                                        "step converges to the same tolerance)")
+                             .oneOf({"BlockCG", "BlockGmres", "Block CG", "Block GMRES", "GMRES", "CG"}));
   e.create = create;
   return e;
 }

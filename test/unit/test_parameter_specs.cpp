@@ -87,7 +87,7 @@ TEST(StrictXml, NumbersAreReadWholeAndOnce) {
       {R"(<Parameter name="Horizon" type="double" value="1e400"/>)", "not a finite number"},
       {R"(<Parameter name="Steps" type="int" value="2.5"/>)", "'Steps' = '2.5' is not an integer"},
       {R"(<Parameter name="Steps" type="int" value="3000000000"/>)", "out of the int range"},
-      {R"(<Parameter name="H" type="double" value="1"/><Parameter name="H" type="double" value="2"/>)", "'H' is given twice"},
+      {R"(<ParameterList name="L"/><ParameterList name="L"/>)", "sub-list 'L' is given twice"},
   };
   for (const Case& c : bad) {
     const std::string path = pftest::writeTemp("strict.xml", deckWith(c.parameter));
@@ -98,6 +98,10 @@ TEST(StrictXml, NumbersAreReadWholeAndOnce) {
       "strict_ok.xml", deckWith(R"(<Parameter name="Horizon" type="double" value=" 3.015e-3 "/><Parameter name="Steps" type="int" value="-7"/>)"));
   const auto p = pf::readInput(good);
   EXPECT_EQ(p->sublist("Blocks").get<double>("Horizon"), 3.015e-3);
+  // A parameter given twice is read as Teuchos reads it: the last value wins (Peridigm's decks rely on it).
+  const std::string twice = pftest::writeTemp(
+      "strict_twice.xml", deckWith(R"(<Parameter name="H" type="double" value="1"/><Parameter name="H" type="double" value="2"/>)"));
+  EXPECT_EQ(pf::readInput(twice)->sublist("Blocks").get<double>("H"), 2.0);
   EXPECT_EQ(p->sublist("Blocks").get<int>("Steps"), -7);
 }
 
