@@ -5,10 +5,6 @@
 
 namespace pf {
 
-namespace {
-
-using S = ParameterSpec;
-
 // "block_<positive integer>" -> the integer, else 0.
 int blockNumber(const std::string& n) {
   if (n.size() <= 6 || n.compare(0, 6, "block_") != 0 || n.find_first_not_of("0123456789", 6) != std::string::npos)
@@ -20,6 +16,11 @@ int blockNumber(const std::string& n) {
     return 0;
   }
 }
+
+namespace {
+
+using S = ParameterSpec;
+
 
 }  // namespace
 

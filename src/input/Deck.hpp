@@ -134,6 +134,21 @@ struct OutputSpec {
   std::shared_ptr<const Expression> appliedDisplacement;  // "Applied Displacement" condition's value
 };
 
+// An entry of Peridigm's "Compute Class Parameters": a global output named `label` (a vector variable gives
+// label X/Y/Z) reducing `variable` over a block or a node set (Sum, Minimum, Maximum), or taking it at the point
+// nearest to `at` (Nearest_Point_Data). Output lists write it when their Output Variables name the label.
+struct ComputeSpec {
+  enum class Kind { BlockData, NodeSetData, NearestPointData };
+  enum class Calculation { Sum, Minimum, Maximum };
+  std::string name;                   // the sub-list name
+  Kind kind = Kind::BlockData;
+  Calculation calculation = Calculation::Sum;
+  int block = 0;                      // BlockData: block_<block>
+  std::string nodeSet;                // NodeSetData
+  std::array<double, 3> at{};         // NearestPointData
+  std::string variable, label;
+};
+
 // The "Restart" list: write a checkpoint every `frequency` steps (docs/output.md, "Restart").
 struct RestartSpec {
   bool given = false;                 // the deck has a Restart list
@@ -151,6 +166,7 @@ struct Deck {
   std::vector<DamageModelSpec> damageModels;
   std::vector<BlockGroupSpec> blocks;
   std::vector<NodeSetSpec> nodeSets;  // user-defined, in deck order
+  std::vector<ComputeSpec> computes;  // "Compute Class Parameters", in deck order
   std::vector<ConditionSpec> conditions;
   std::vector<RigidWallSpec> walls;
   std::vector<SolverSpec> solvers;    // run in sequence

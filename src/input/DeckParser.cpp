@@ -16,7 +16,7 @@ namespace {
 // Top-level sub-lists a deck may hold; Peridigm's numbered Solver<n>/Output<n> lists with n = 1, 2, ...
 std::vector<std::string> topLists(const PL& p, const std::string& file) {
   std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart",
-                                    "Damage Models"};
+                                    "Damage Models", "Compute Class Parameters"};
   for (const std::string stem : {"Solver", "Output"}) {
     const std::vector<std::string> lists = numberedLists(p, stem);
     tops.insert(tops.end(), lists.begin(), lists.end());
@@ -46,9 +46,11 @@ std::vector<SolverSpec> solvers(const PL& p, const std::string& file) {
 
 std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<std::string>& nodeSets) {
   std::vector<OutputSpec> out;
+  std::set<std::string> labels;
+  for (const ComputeSpec& c : deck.computes) labels.insert(c.label);
   std::map<std::string, std::string> files;  // Output Filename -> list
   for (const std::string& n : numberedLists(p, "Output")) {
-    out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver()));
+    out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels));
     const std::string& f = out.back().filename;
     if (files.count(f)) fail(deck.file, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");
     files[f] = n;
@@ -84,6 +86,8 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
     deck.conditions = parseConditions(bcs, nodeSets, file);
     deck.walls = parseRigidWalls(bcs, nodeSets, deck.solvers, file);
   }
+  if (p.isSublist("Compute Class Parameters"))
+    deck.computes = parseComputes(p.sublist("Compute Class Parameters"), nodeSets, file);
   deck.outputs = outputs(p, deck, nodeSets);
   if (p.isSublist("Restart")) deck.restart = parseRestart(p.sublist("Restart"), file, deck.outputs);
   return deck;

@@ -6,12 +6,8 @@
 
 namespace pf {
 
-namespace {
-
-using S = ParameterSpec;
-
 // The core's fields and every registered model's declared outputs (the registries are fixed: built once).
-const std::vector<std::string>& knownVariables() {
+const std::vector<std::string>& knownOutputVariables() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n = coreVectorFields();
     for (const auto* list : {&coreScalarFields(), &globalFields()}) n.insert(n.end(), list->begin(), list->end());
@@ -23,9 +19,14 @@ const std::vector<std::string>& knownVariables() {
   return names;
 }
 
+namespace {
+
+using S = ParameterSpec;
+
+
 void checkVariable(const std::string& var, bool dynamic, const std::string& file, const std::string& path,
                    const std::string& param) {
-  const std::vector<std::string>& known = knownVariables();
+  const std::vector<std::string>& known = knownOutputVariables();
   if (std::find(known.begin(), known.end(), var) == known.end())
     fail(file, path, "'" + param + "' names unknown output variable '" + var + "'");
   // Peridigm's dynamic integrators (Verlet, Implicit) define the acceleration (f + b)/rho they step with;
@@ -34,18 +35,20 @@ void checkVariable(const std::string& var, bool dynamic, const std::string& file
     fail(file, path, "'Acceleration' is only written by a dynamic solver (Verlet, Implicit)");
 }
 
-std::vector<std::string> outputVariables(const PL& v, bool dynamic, const std::string& file, const std::string& path) {
+std::vector<std::string> outputVariables(const PL& v, bool dynamic, const std::string& file, const std::string& path,
+                                         const std::set<std::string>& computeLabels) {
   // Peridigm fields its regression decks request that Periforge does not compute: named as such rather
   // than as unknown, so the deck's author knows the request was understood.
   for (const char* n : {"Strain_Energy", "Neighborhood_Volume"})
     if (v.isParameter(n)) fail(file, path, std::string("Peridigm's output variable '") + n + "' is not supported by Periforge");
   std::vector<ParameterSpec> specs;
-  for (const std::string& n : knownVariables()) specs.push_back(S::flag(n));
+  for (const std::string& n : knownOutputVariables()) specs.push_back(S::flag(n));
+  for (const std::string& n : computeLabels) specs.push_back(S::flag(n));
   const ParameterValues values = readList(v, specs, {}, file, path);
   std::vector<std::string> out;
   for (auto it = v.begin(); it != v.end(); ++it)
     if (values.flag(v.name(it))) {
-      checkVariable(v.name(it), dynamic, file, path, "Output Variables");
+      if (!computeLabels.count(v.name(it))) checkVariable(v.name(it), dynamic, file, path, "Output Variables");
       out.push_back(v.name(it));
     }
   return out;
@@ -131,7 +134,7 @@ std::vector<ParameterSpec> probeSpecs() {
 
 OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& path,
                        const std::set<std::string>& nodeSets, const std::vector<ConditionSpec>& conditions,
-                       bool dynamic) {
+                       bool dynamic, const std::set<std::string>& computeLabels) {
   const ParameterValues v = readList(o, outputSpecs(), {"Output Variables", "Probes"}, file, path);
   OutputSpec s;
   s.listName = path;
@@ -148,7 +151,8 @@ OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& 
   if (v.has("Applied Displacement"))
     s.appliedDisplacement = appliedDisplacement(v.text("Applied Displacement"), conditions, file, path);
   if (o.isSublist("Output Variables"))
-    s.variables = outputVariables(o.sublist("Output Variables"), dynamic, file, path + "/Output Variables");
+    s.variables =
+        outputVariables(o.sublist("Output Variables"), dynamic, file, path + "/Output Variables", computeLabels);
   if (o.isSublist("Probes")) s.probes = probes(o.sublist("Probes"), dynamic, file, path + "/Probes");
   return s;
 }

@@ -47,7 +47,8 @@ std::vector<ParameterTable> parameterTables() {
       {"solver", "Solver (or Solver1, Solver2, ...)", solverListSpecs()},
       {"output", "Output (or Output1, Output2, ...)", outputSpecs()},
       {"probe", "Output/Probes/<any name>", probeSpecs()},
-      {"restart", "Restart", restartSpecs()}};
+      {"restart", "Restart", restartSpecs()},
+      {"compute", "Compute Class Parameters/<any name>", computeSpecs()}};
   const std::size_t common = discretizationSpecs("").size();
   for (auto& [key, type] : std::vector<std::pair<std::string, std::string>>{
            {"text-file", "Text File"}, {"exodus", "Exodus"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"},

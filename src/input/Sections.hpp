@@ -22,6 +22,7 @@ std::vector<std::string> generatedNodeSetNames(const DiscretizationSpec& d);
 
 // Materials and Blocks.
 std::vector<ParameterSpec> blockSpecs();
+int blockNumber(const std::string& name);  // "block_<positive integer>" -> the integer, else 0
 MaterialSpec parseMaterial(const PL& m, const std::string& name, const std::string& file);
 std::vector<MaterialSpec> parseMaterials(const PL& deck, const std::string& file);
 std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<MaterialSpec>& materials,
@@ -52,9 +53,17 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
 // Output lists. conditions: for "Applied Displacement"; dynamic: a dynamic solver runs (Acceleration).
 std::vector<ParameterSpec> outputSpecs();
 std::vector<ParameterSpec> probeSpecs();
+// computeLabels: the Output Labels of the deck's compute classes, which Output Variables may name.
 OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& listName,
                        const std::set<std::string>& nodeSets, const std::vector<ConditionSpec>& conditions,
-                       bool dynamic);
+                       bool dynamic, const std::set<std::string>& computeLabels = {});
+
+// The core's output fields and every registered model's declared outputs.
+const std::vector<std::string>& knownOutputVariables();
+
+// Peridigm's "Compute Class Parameters" (before the output lists, which may name their Output Labels).
+std::vector<ParameterSpec> computeSpecs();
+std::vector<ComputeSpec> parseComputes(const PL& list, const std::set<std::string>& nodeSets, const std::string& file);
 
 // Restart (after the output lists: its default file name is the first one's).
 std::vector<ParameterSpec> restartSpecs();

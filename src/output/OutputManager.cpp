@@ -45,6 +45,12 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
   first_ = out.firstStep;
   last_ = out.lastStep;
   for (const std::string& var : out.variables) {
+    const auto compute = std::find_if(deck.computes.begin(), deck.computes.end(),
+                                      [&](const ComputeSpec& c) { return c.label == var; });
+    if (compute != deck.computes.end()) {
+      addCompute(*compute);
+      continue;
+    }
     if (contains(kGlobals, var)) {
       requireGlobal(var, out.listName + "/Output Variables");
       globals_.push_back(var);
@@ -66,7 +72,33 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
 }
 
 bool OutputManager::dummyNodeFile() const {
-  return nodalVectors_.empty() && elementScalars_.empty() && !globals_.empty();
+  return nodalVectors_.empty() && elementScalars_.empty() && (!globals_.empty() || !computes_.empty());
+}
+
+// Collective: the owned points a compute class covers, checked to be some points of the whole cloud.
+void OutputManager::addCompute(const ComputeSpec& spec) {
+  const std::string where = inputFile_ + ": Compute Class Parameters/" + spec.name;
+  requireComputed(spec.variable, "Compute Class Parameters/" + spec.name + "/Variable");
+  std::vector<int> points;
+  const std::vector<int>& gids = model_.layout().gids();
+  if (spec.kind == ComputeSpec::Kind::BlockData) {
+    for (const BlockModel& b : model_.blocks())
+      if (b.blockId == spec.block)
+        for (int i = b.begin; i < b.end; ++i) points.push_back(i);
+    if (model_.sum(static_cast<double>(points.size())) == 0.0)
+      throw InputError(where + ": 'Block' = 'block_" + std::to_string(spec.block) + "' has no points");
+  } else if (spec.kind == ComputeSpec::Kind::NodeSetData) {
+    const std::vector<int>& set = pb_.nodeSets.at(spec.nodeSet);  // gids of owned points, ascending
+    for (int i = 0; i < model_.numOwned(); ++i)
+      if (std::binary_search(set.begin(), set.end(), gids[i])) points.push_back(i);
+  } else {
+    double d2 = 0.0, at[3];
+    const int id = nearestPoint(spec.at.data(), &d2, at);
+    if (id < 0) throw InputError(where + ": no point is nearest to the position (a non-finite coordinate)");
+    for (int i = 0; i < model_.numOwned(); ++i)
+      if (gids[i] == id) points.push_back(i);
+  }
+  computes_.add(spec, points, contains(kVectors, spec.variable));
 }
 
 // Collective: rank 0 gets every point's block in cloud order, for the Exodus file's element blocks, as runs of
@@ -268,17 +300,20 @@ void OutputManager::openWriters(bool append) {
       else
         cols.push_back("Probe_" + label(p.name) + "_" + var);
     }
+  const std::vector<std::string> computed = computes_.names();
+  cols.insert(cols.end(), computed.begin(), computed.end());
   history_ = std::make_unique<HistoryWriter>(files_->part(".csv"), cols, append);
   if (!exodus_) return;
-  std::vector<std::string> scalars, elements;
+  std::vector<std::string> scalars, elements, globals = globals_;
   for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
+  globals.insert(globals.end(), computed.begin(), computed.end());
   if (dummyNodeFile())
     // Peridigm's file for global data only: one dummy node at the origin in one one-element block.
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{0.0, 0.0, 0.0}, std::vector<int>{1},
-                                             false, nodalVectors_, scalars, elements, globals_, append);
+                                             false, nodalVectors_, scalars, elements, globals, append);
   else
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{}, blockRuns_, pb_.cloud.planar,
-                                             nodalVectors_, scalars, elements, globals_, append);
+                                             nodalVectors_, scalars, elements, globals, append);
 }
 
 OutputManager::~OutputManager() = default;
@@ -346,6 +381,11 @@ std::vector<double> OutputManager::historyRow(const StepReport& report, const st
     }
   std::vector<double> global(local.size());
   if (!local.empty()) model_.layout().comm().sum(local.data(), global.data(), static_cast<int>(local.size()));
+  if (!computes_.empty()) {
+    computeValues_ = computes_.evaluate(model_.layout().comm(),
+                                        [&](const std::string& var, int c, int i) { return nodeValue(var, c, i, u, v, f); });
+    global.insert(global.end(), computeValues_.begin(), computeValues_.end());
+  }
   return global;
 }
 
@@ -365,6 +405,8 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
     }
     globals[var] = model_.sum(e);
   }
+  const std::vector<std::string> computed = computes_.names();
+  for (std::size_t k = 0; k < computed.size(); ++k) globals[computed[k]] = computeValues_[k];
   // Rank 0 writes the fields chunk by chunk in cloud order as the ranks send their points' values, taken
   // straight from the model (parallel/ChunkedGather.hpp): no rank copies a whole field, not even its share.
   std::vector<ChunkedGather::Field> fields;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "model/ModelBuilder.hpp"
+#include "output/ComputeClasses.hpp"
 #include "output/ExodusWriter.hpp"
 #include "solvers/Solver.hpp"
 
@@ -74,6 +75,7 @@ class OutputManager : public StepObserver {
   void gatherBlockIds();
   void writeCoordinates();
   void addReactions(const OutputSpec& out);
+  void addCompute(const ComputeSpec& spec);
   void onRoot(const std::function<void()>& write, bool everyRank = false);
   void openFiles();
   void openWriters(bool append);
@@ -97,6 +99,8 @@ class OutputManager : public StepObserver {
   std::vector<std::string> nodalVectors_, elementScalars_, globals_;
   std::vector<Probe> probes_;
   std::vector<Reaction> reactions_;
+  ComputeClasses computes_;             // Peridigm's compute classes this list writes (globals)
+  std::vector<double> computeValues_;   // their values at the step being written (historyRow)
   std::unique_ptr<ExodusWriter> writer_;
   std::unique_ptr<ChunkedGather> gather_;  // built once: which owned points go to rank 0 in which chunk
   BlockRuns blockRuns_;  // rank 0, while the Exodus writer is made: the points' blocks in cloud order

@@ -90,7 +90,10 @@ set(peridigm_suite_cases
   "Compression_QS_3x2x2_Exodus Compression_QS_3x2x2_Exodus.xml Compression_QS_3x2x2_Exodus Compression_QS_3x2x2_Exodus.comp"
   "Compression_QS_CyclicLoading_3x2x2 Compression_QS_CyclicLoading_3x2x2.xml Compression_QS_CyclicLoading_3x2x2 Compression_QS_CyclicLoading_3x2x2.comp"
   "DefaultBlocks DefaultBlocks.xml DefaultBlocks DefaultBlocks.comp"
-  "WaveInBar WaveInBar.xml WaveInBar WaveInBar.comp")
+  "WaveInBar WaveInBar.xml WaveInBar WaveInBar.comp"
+  "WaveInBar_MultiBlock WaveInBar_MultiBlock.xml WaveInBar_MultiBlock WaveInBar_MultiBlock.comp"
+  "MultipleHorizons MultipleHorizons.xml MultipleHorizons MultipleHorizons.comp"
+  "Body_Force__QS_NOX Body_Force_QS_NOX.xml Body_Force_QS_NOX Body_Force.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)
