@@ -109,11 +109,11 @@ void buildFamilies(const std::vector<double>& points, int numQueries, const std:
   for (int i = 0; i < numQueries; ++i) {
     const double* xi = &points[3 * i];
     const double h = horizon[i] + reach;
-    // Peridigm's rule (VTK's kd-tree: |xi|^2 <= delta^2, no tolerance): a centre on the horizon is a neighbour
-    // as far as the squares round, and one 1e-12 beyond it is not (Peridigm's MultipleHorizons deck tests
-    // horizons of 1 - 1e-12 and 1 + 1e-12 on a unit lattice). Partial volumes keep a tie tolerance: there the
-    // cell share decides.
-    grid.within(points, i, h, gridCell ? h * h * (1.0 + 1e-10) : h * h, row);
+    // Peridigm's rule is |xi|^2 <= delta^2 (VTK's kd-tree, no tolerance). A centre on the horizon is kept
+    // whatever its squares round to (a lattice at delta = 3 dx, 15 dx): a tie tolerance of 1e-13 of delta^2,
+    // some hundred ulps, well below the 2e-12 by which Peridigm's MultipleHorizons deck puts its horizons
+    // (1 -/+ 1e-12 on a unit lattice) either side of the neighbours it must drop or keep.
+    grid.within(points, i, h, h * h * (1.0 + (gridCell ? 1e-10 : 1e-13)), row);
     std::sort(row.begin(), row.end());
     for (int j : row) {
       const double d0 = points[3 * j] - xi[0], d1 = points[3 * j + 1] - xi[1], d2 = points[3 * j + 2] - xi[2];

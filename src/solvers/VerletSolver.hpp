@@ -23,7 +23,9 @@ class VerletSolver : public Solver {
   void check(const Model& model) const override;  // Fixed dt against the stable step (warns or refuses)
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
-  static double stableTimeStep(const Model& model);  // Gershgorin estimate, before the safety factor
+  // Gershgorin estimate, before the safety factor; freeOnly: over the points with a free component only
+  // (infinity if there is none).
+  static double stableTimeStep(const Model& model, bool freeOnly = false);
   // The Gershgorin bound is conservative, so a Fixed dt somewhat above it may still be stable (it warns);
   // at twice the bound the highest mode of a uniform lattice is already amplified every step, so more
   // than that is refused unless the user insists.
