@@ -3,6 +3,7 @@
 // neighbours as local indices into the overlap arrays (owned nodes first, then ghosts). Built once on
 // the reference configuration; kernels only read it.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace pf {
@@ -101,5 +102,9 @@ inline FamilyView makeView(const BondFamily& f, int begin, int end, const double
 // m_i = sum_j omega_ij |xi_ij|^2 V_j (V_j times the bond's fraction, if any) for owned nodes [begin, end)
 // (Pirzadeh 2024 Eq. 5 context).
 void computeWeightedVolume(const FamilyView& fam, double* m);
+
+// Keeps only the bonds keep(i, j) accepts (i: owned row, j: overlap index of the far end), compacting the
+// rows; for a family whose influence is not set yet (a bond filter of the neighbour search).
+void keepBonds(BondFamily& family, const std::function<bool(int, int)>& keep);
 
 }  // namespace pf

@@ -26,6 +26,7 @@ struct DiscretizationSpec {
   Type type = Type::QuickGrid;
   Influence influence = Influence::One;
   bool partialVolume = false;
+  bool omitBondsBetweenBlocks = false;  // Peridigm's "Omit Bonds Between Blocks" = "All"
   // PdQuickGrid without "NeighborhoodType" (and without Partial Volume): Peridigm's default neighbourhood,
   // a box of round(δ/dx) cells per direction (its NoOp norm, QuickGrid.cxx); else the ball |ξ| <= δ.
   bool boxNeighbourhood = false;

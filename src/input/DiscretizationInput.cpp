@@ -91,7 +91,9 @@ std::vector<ParameterSpec> discretizationSpecs(const std::string& type) {
       S::flag("Partial Volume",
               "`false`: Peridigm's rule, a neighbour counts whole if its centre is within δ; `true`: every "
               "neighbour whose grid cell overlaps the horizon ball counts with the share of its cell inside it "
-              "(regular grids only)").byDefault("false")};
+              "(regular grids only)").byDefault("false"),
+      S::text("Omit Bonds Between Blocks", "Peridigm's: `All`, no bond joins points of two different blocks; `None`: "
+                                           "bonds cross block boundaries").byDefault("None").oneOf({"All", "None"})};
   if (type == "Text File")
     s.push_back(S::text("Input Mesh File", "file of lines `x y z block_id volume`; `#` starts a comment").need());
   if (type == "Exodus") {
@@ -198,6 +200,7 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   }
   s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path);
   s.partialVolume = v.flag("Partial Volume");
+  s.omitBondsBetweenBlocks = v.text("Omit Bonds Between Blocks") == "All";
   s.boxNeighbourhood = s.type == DiscretizationSpec::Type::QuickGrid && !v.has("NeighborhoodType") && !s.partialVolume;
   if (s.partialVolume && (s.type == DiscretizationSpec::Type::TextFile || s.type == DiscretizationSpec::Type::Exodus))
     fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "

@@ -221,7 +221,8 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   const std::array<double, 3> box = quickGridBox(deck.discretization, h1);
   auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence,
                                                     cloud.partialVolume ? &cloud.cell : nullptr,
-                                                    deck.discretization.boxNeighbourhood ? &box : nullptr);
+                                                    deck.discretization.boxNeighbourhood ? &box : nullptr,
+                                                    deck.discretization.omitBondsBetweenBlocks);
   std::vector<double> x = layout->releaseCoordinates(), volume = layout->releaseVolumes();
   requireDistinctPoints(*layout, x, volume, cloud.spacing, inputFile);
   const std::vector<int>& gids = layout->gids();

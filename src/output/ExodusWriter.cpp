@@ -69,7 +69,8 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
                            bool planar, const std::vector<std::string>& nodalVectorNames,
                            const std::vector<std::string>& nodalScalarNames,
                            const std::vector<std::string>& elementScalarNames,
-                           const std::vector<std::string>& globalNames, bool append)
+                           const std::vector<std::string>& globalNames, bool append,
+                           const std::map<int, std::vector<char>>& elementVariablesOf)
     : filename_(filename),
       numNodes_(blocks.numNodes()),
       planar_(planar),
@@ -94,7 +95,15 @@ ExodusWriter::ExodusWriter(const std::string& filename, const std::vector<double
     if (r.id < 1) throw std::runtime_error("ExodusWriter(" + filename + "): block ids must be >= 1");
     const auto at = std::lower_bound(blockIds_.begin(), blockIds_.end(), r.id);
     if (at == blockIds_.end() || *at != r.id) blockIds_.insert(at, r.id);
+  }  truth_.assign(blockIds_.size() * elementNames_.size(), 1);
+  for (std::size_t b = 0; b < blockIds_.size(); ++b) {
+    const auto it = elementVariablesOf.find(blockIds_[b]);
+    if (it == elementVariablesOf.end()) continue;
+    if (it->second.size() != elementNames_.size())
+      throw std::logic_error("ExodusWriter(" + filename + "): a block's element-variable flags do not match the names");
+    for (std::size_t e = 0; e < elementNames_.size(); ++e) truth_[b * elementNames_.size() + e] = it->second[e] ? 1 : 0;
   }
+
   blockSizes_.assign(blockIds_.size(), 0);
   for (const BlockRuns::Run& r : blocks.runs()) {
     const auto b = static_cast<std::size_t>(std::lower_bound(blockIds_.begin(), blockIds_.end(), r.id) - blockIds_.begin());
@@ -127,7 +136,7 @@ void ExodusWriter::create(const std::vector<double>& coords, const std::vector<s
     if (!nodalNames.empty()) putVariableNames(EX_NODAL, nodalNames, "nodal");
     if (!elementNames_.empty()) {
       putVariableNames(EX_ELEM_BLOCK, elementNames_, "element");
-      std::vector<int> truth(blockIds_.size() * elementNames_.size(), 1);
+      std::vector<int> truth(truth_.begin(), truth_.end());
       check(ex_put_truth_table(exoid_, EX_ELEM_BLOCK, static_cast<int>(blockIds_.size()),
                                static_cast<int>(elementNames_.size()), truth.data()),
             "ex_put_truth_table");
@@ -304,7 +313,8 @@ void ExodusWriter::writeNodes(std::size_t begin, std::size_t count, const std::v
     const std::size_t lo = std::max(r.begin, begin), hi = std::min(r.end, begin + count);
     if (lo >= hi) continue;
     for (std::size_t e = 0; e < elements.size(); ++e)
-      check(ex_put_partial_var(exoid_, step, EX_ELEM_BLOCK, static_cast<int>(e) + 1, blockIds_[r.b],
+      if (truth_[r.b * elements.size() + e])
+        check(ex_put_partial_var(exoid_, step, EX_ELEM_BLOCK, static_cast<int>(e) + 1, blockIds_[r.b],
                                static_cast<int64_t>(r.first + (lo - r.begin)) + 1, static_cast<int64_t>(hi - lo),
                                elements[e] + (lo - begin)),
             "ex_put_partial_var(element)");

@@ -46,11 +46,14 @@ class ExodusWriter {
   // Throws std::runtime_error (naming the file) on any ExodusII failure or bad sizes.
   // append: continue a file this writer wrote with the same arguments (a restart): it is opened, not
   // created, and the next writeStep follows its last step; a file with other variables is an error.
+  // elementVariablesOf: per block id, one flag per element scalar: whether the block has it (Peridigm leaves a
+  // variable out of the blocks whose material lacks it: the Exodus truth table); a block not listed has all.
   ExodusWriter(const std::string& filename, const std::vector<double>& coords, const BlockRuns& blocks, bool planar,
                const std::vector<std::string>& nodalVectorNames,
                const std::vector<std::string>& nodalScalarNames,
                const std::vector<std::string>& elementScalarNames,
-               const std::vector<std::string>& globalNames = {}, bool append = false);
+               const std::vector<std::string>& globalNames = {}, bool append = false,
+               const std::map<int, std::vector<char>>& elementVariablesOf = {});
   ExodusWriter(const std::string& filename, const std::vector<double>& coords,
                const std::vector<int>& blockIdPerNode, bool planar,
                const std::vector<std::string>& nodalVectorNames,
@@ -111,6 +114,7 @@ class ExodusWriter {
     std::size_t b;
   };
   std::vector<int> blockIds_;                // sorted distinct ids
+  std::vector<char> truth_;                  // blockIds_.size() x elementNames_.size(): the block has the variable
   std::vector<std::size_t> blockSizes_;      // per block: its node count
   std::vector<Run> runs_;
   std::size_t nextNode_ = 0;                 // the step being written: nodes written so far

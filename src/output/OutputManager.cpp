@@ -58,6 +58,7 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
     requireComputed(var, out.listName + "/Output Variables");
     (contains(kVectors, var) ? nodalVectors_ : elementScalars_).push_back(var);
   }
+  findElementVariablesOfBlocks();
   for (const ProbeSpec& p : out.probes) probes_.push_back(locateProbe(p, out.listName));
   addReactions(out);
   applied_ = out.appliedDisplacement;
@@ -172,7 +173,7 @@ void OutputManager::openWriters(bool append) {
                                              false, nodalVectors_, scalars, elements, globals, append);
   else
     writer_ = std::make_unique<ExodusWriter>(files_->part(".e"), std::vector<double>{}, blockRuns_, pb_.cloud.planar,
-                                             nodalVectors_, scalars, elements, globals, append);
+                                             nodalVectors_, scalars, elements, globals, append, elementVariablesOf_);
 }
 
 OutputManager::~OutputManager() = default;

@@ -18,6 +18,7 @@
 // finish(); abandon() leaves them with a <name>.status line instead (OutputFiles). Rank 0 writes; every
 // call that can fail there is agreed on collectively, so a failed write throws on every rank.
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -76,6 +77,7 @@ class OutputManager : public StepObserver {
   void writeCoordinates();
   void addReactions(const OutputSpec& out);
   void addCompute(const ComputeSpec& spec);
+  void findElementVariablesOfBlocks();
   void onRoot(const std::function<void()>& write, bool everyRank = false);
   void openFiles();
   void openWriters(bool append);
@@ -99,6 +101,7 @@ class OutputManager : public StepObserver {
   std::vector<std::string> nodalVectors_, elementScalars_, globals_;
   std::vector<Probe> probes_;
   std::vector<Reaction> reactions_;
+  std::map<int, std::vector<char>> elementVariablesOf_;  // per block id: which elementScalars_ it has
   ComputeClasses computes_;             // Peridigm's compute classes this list writes (globals)
   std::vector<double> computeValues_;   // their values at the step being written (historyRow)
   std::unique_ptr<ExodusWriter> writer_;

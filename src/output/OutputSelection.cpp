@@ -165,4 +165,27 @@ void OutputManager::addReactions(const OutputSpec& out) {
   }
 }
 
+// Collective: per block id of the whole cloud, which element variables its material computes (the core's are
+// everyone's), so that the Exodus file leaves a variable out of the blocks that lack it, as Peridigm does. Each
+// rank knows its own blocks' materials; the flags are gathered as (id, flag...) rows and or-ed.
+void OutputManager::findElementVariablesOfBlocks() {
+  const std::size_t n = elementScalars_.size();
+  std::vector<double> mine;
+  for (const BlockModel& b : model_.blocks()) {
+    mine.push_back(b.blockId);
+    for (const std::string& var : elementScalars_) {
+      bool has = contains(kCoreScalars, var);
+      for (const StateSpec& s : b.material->stateSpecs()) has = has || (s.name == var && s.where == Location::Node);
+      mine.push_back(has ? 1.0 : 0.0);
+    }
+  }
+  const std::vector<double> all = model_.layout().comm().allGather(mine);
+  elementVariablesOf_.clear();
+  for (std::size_t r = 0; r + n < all.size(); r += n + 1) {
+    std::vector<char>& flags = elementVariablesOf_[static_cast<int>(all[r])];
+    flags.resize(n, 0);
+    for (std::size_t k = 0; k < n; ++k) flags[k] = flags[k] || all[r + 1 + k] != 0.0;
+  }
+}
+
 }  // namespace pf

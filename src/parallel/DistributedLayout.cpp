@@ -109,9 +109,23 @@ void setInfluence(BondFamily& family, const std::vector<double>& h, const Influe
 
 }  // namespace
 
+namespace {
+
+// Peridigm's "Omit Bonds Between Blocks" = "All": drops every bond whose ends lie in different blocks. Overlap
+// index k is owned point owned[k] below owned.size(), else candidate candidates[k - owned.size()].
+void keepBondsWithinBlocks(BondFamily& family, const PointCloud& ownedPoints, const std::vector<int>& owned,
+                           const PointCloud& ghosts, const std::vector<int>& candidates) {
+  const int n = static_cast<int>(owned.size());
+  auto blockOf = [&](int k) { return k < n ? ownedPoints.block[owned[k]] : ghosts.block[candidates[k - n]]; };
+  keepBonds(family, [&](int i, int j) { return blockOf(i) == blockOf(j); });
+}
+
+}  // namespace
+
 DistributedLayout::DistributedLayout(const Communicator& comm, const PointCloud& ownedPoints,
                                      const std::vector<double>& horizon, const Influence& influence,
-                                     const std::array<double, 3>* cell, const std::array<double, 3>* box)
+                                     const std::array<double, 3>* cell, const std::array<double, 3>* box,
+                                     bool omitBondsBetweenBlocks)
     : comm_(comm) {
   numGlobal_ = static_cast<int>(ownedPoints.numGlobal);
   numOwned_ = ownedPoints.size();
@@ -145,6 +159,7 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const PointCloud&
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
   buildFamilies(pts, numOwned_, h, family_, cell, box);
+  if (omitBondsBetweenBlocks) keepBondsWithinBlocks(family_, ownedPoints, owned, ghosts, candidates);
   // Rows in a global order (Hilbert key, then cloud index) instead of local index order, where a point's
   // on-rank neighbours precede its ghosts: family sums then run in the same order at every rank count.
   const int nOwned = numOwned_;

@@ -28,10 +28,11 @@ class DistributedLayout {
   // bounding box (an exchange of boxes, then of those points): no rank sees the whole cloud. The influence
   // function sets each bond's omega from its length and its owner's horizon. cell: the grid's cell for
   // partial-volume families (see buildFamilies), or null for whole neighbour volumes. box: Peridigm's
-  // PdQuickGrid box neighbourhood (buildFamilies), or null for the spherical one.
+  // PdQuickGrid box neighbourhood (buildFamilies), or null for the spherical one. omitBondsBetweenBlocks:
+  // Peridigm's "Omit Bonds Between Blocks" = "All", no bond joins points of two blocks.
   DistributedLayout(const Communicator& comm, const PointCloud& owned, const std::vector<double>& horizon,
                     const Influence& influence, const std::array<double, 3>* cell = nullptr,
-                    const std::array<double, 3>* box = nullptr);
+                    const std::array<double, 3>* box = nullptr, bool omitBondsBetweenBlocks = false);
   ~DistributedLayout();
   DistributedLayout(const DistributedLayout&) = delete;
   DistributedLayout& operator=(const DistributedLayout&) = delete;

@@ -84,6 +84,8 @@ set(peridigm_suite_cases
   "Bar_OneBlock_OneMaterial_QS Bar.xml Bar Bar.comp"
   "Bar_TwoBlocks_OneMaterial_QS Bar.xml Bar Bar.comp"
   "Bar_TwoBlocks_TwoMaterial_QS Bar.xml Bar Bar.comp"
+  "Bar_TwoBlocks_TwoDifferentMaterial_QS Bar.xml Bar Bar.comp"
+  "Bar_TwoDisconnectedPieces_QS Bar.xml Bar Bar.comp"
   "Body_Force__QS Body_Force_QS.xml Body_Force_QS Body_Force.comp"
   "CompressionInitDisp_2x1x1 CompressionInitDisp_2x1x1.xml CompressionInitDisp_2x1x1 CompressionInitDisp_2x1x1.comp"
   "Compression_3x1x1 Compression_3x1x1.yaml Compression_3x1x1 Compression_3x1x1.comp"
