@@ -4,7 +4,7 @@ namespace pf {
 
 const std::vector<std::string>& coreVectorFields() {
   static const std::vector<std::string> v = {"Displacement", "Velocity", "Force_Density", "Force",
-                                             "Model_Coordinates", "Coordinates", "Acceleration"};
+                                             "Model_Coordinates", "Coordinates", "Acceleration", "External_Force_Density"};
   return v;
 }
 

@@ -188,6 +188,7 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   // bodyForce_ holds b at the step's time (onStep fills it first) or zeros.
   if (var == "Acceleration") return (f[3 * i + comp] + bodyForce_[3 * i + comp]) / model_.density()[i];
   if (var == "Model_Coordinates") return x[3 * i + comp];
+  if (var == "External_Force_Density") return bodyForce_[3 * i + comp];  // Peridigm's name for the body force b
   if (var == "Coordinates") return x[3 * i + comp] + u[3 * i + comp];
   if (var == "Weighted_Volume") return model_.weightedVolume()[i];
   if (var == "Element_Id") return model_.layout().gids()[i] + 1;

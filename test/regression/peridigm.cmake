@@ -87,6 +87,7 @@ set(peridigm_suite_cases
   "Bar_TwoBlocks_TwoDifferentMaterial_QS Bar.xml Bar Bar.comp"
   "Bar_TwoDisconnectedPieces_QS Bar.xml Bar Bar.comp"
   "Body_Force__QS Body_Force_QS.xml Body_Force_QS Body_Force.comp"
+  "CentrifugalLoad CentrifugalLoad.xml CentrifugalLoad CentrifugalLoad.comp"
   "CompressionInitDisp_2x1x1 CompressionInitDisp_2x1x1.xml CompressionInitDisp_2x1x1 CompressionInitDisp_2x1x1.comp"
   "Compression_3x1x1 Compression_3x1x1.yaml Compression_3x1x1 Compression_3x1x1.comp"
   "Compression_QS_3x2x2_Exodus Compression_QS_3x2x2_Exodus.xml Compression_QS_3x2x2_Exodus Compression_QS_3x2x2_Exodus.comp"
