@@ -1,5 +1,7 @@
 #include "OutputFields.hpp"
 
+#include <algorithm>
+
 namespace pf {
 
 const std::vector<std::string>& coreVectorFields() {
@@ -19,6 +21,16 @@ const std::vector<std::string>& globalFields() {
                                              "Global_Wall_Energy_Loss"};
   return v;
 }
+
+namespace {
+bool listed(const std::vector<std::string>& list, const std::string& name) {
+  return std::find(list.begin(), list.end(), name) != list.end();
+}
+}  // namespace
+
+bool isCoreVectorField(const std::string& name) { return listed(coreVectorFields(), name); }
+bool isCoreScalarField(const std::string& name) { return listed(coreScalarFields(), name); }
+bool isGlobalField(const std::string& name) { return listed(globalFields(), name); }
 
 const char* globalSourceField(const std::string& global) {
   if (global == "Global_Strain_Energy") return "Stored_Elastic_Energy";

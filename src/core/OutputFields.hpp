@@ -9,6 +9,9 @@ namespace pf {
 const std::vector<std::string>& coreVectorFields();  // 3 components per node: "Displacement", ...
 const std::vector<std::string>& coreScalarFields();  // one value per node: "Volume", "Horizon", ...
 const std::vector<std::string>& globalFields();      // one value per step: "Global_Kinetic_Energy", ...
+bool isCoreVectorField(const std::string& name);
+bool isCoreScalarField(const std::string& name);
+bool isGlobalField(const std::string& name);
 
 // The per-node energy (J per node, not a density) a whole-body global sums over the owned nodes, or null for
 // Global_Kinetic_Energy (computed from v). The node field is declared by whoever computes it, so the output

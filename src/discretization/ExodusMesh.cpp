@@ -78,24 +78,25 @@ Elements readElements(const ExodusFile& f, long long lo, long long hi, bool& pla
   return e;
 }
 
-// The coordinates of the sorted, distinct nodes `wanted` (1-based), read chunk by chunk.
+// The coordinates of the nodes [start, start + count) (1-based) of at most kChunk nodes, into x[0..2]; z = 0 in 2D.
+// Returns count, cut at the last node.
+long long readCoordinateChunk(const ExodusFile& f, long long start, std::vector<double> (&x)[3]) {
+  const long long count = std::min<long long>(kChunk, f.summary().nodes - start + 1);
+  for (auto& c : x) c.assign(static_cast<std::size_t>(count), 0.0);
+  f.check(ex_get_partial_coord(f.id(), start, count, x[0].data(), x[1].data(),
+                               f.summary().dimension > 2 ? x[2].data() : nullptr),
+          "ex_get_partial_coord");
+  return count;
+}
+
+// The coordinates of the sorted, distinct nodes `wanted` (1-based), read chunk by chunk from the next wanted one.
 std::vector<double> nodeCoordinates(const ExodusFile& f, const std::vector<int>& wanted) {
   std::vector<double> out(3 * wanted.size(), 0.0);
-  if (wanted.empty()) return out;
-  const int dim = f.summary().dimension;
-  std::vector<double> x, y, z;
-  std::size_t w = 0;
-  for (long long start = wanted.front(); w < wanted.size();) {
-    start = std::max<long long>(start, wanted[w]);
-    const long long count = std::min<long long>(kChunk, f.summary().nodes - start + 1);
-    x.assign(static_cast<std::size_t>(count), 0.0), y.assign(x.size(), 0.0), z.assign(x.size(), 0.0);
-    f.check(ex_get_partial_coord(f.id(), start, count, x.data(), y.data(), dim > 2 ? z.data() : nullptr),
-            "ex_get_partial_coord");
-    for (; w < wanted.size() && wanted[w] < start + count; ++w) {
-      const std::size_t k = static_cast<std::size_t>(wanted[w] - start);
-      out[3 * w] = x[k], out[3 * w + 1] = y[k], out[3 * w + 2] = dim > 2 ? z[k] : 0.0;
-    }
-    start += count;
+  std::vector<double> x[3];
+  for (std::size_t w = 0; w < wanted.size();) {
+    const long long start = wanted[w], count = readCoordinateChunk(f, start, x);
+    for (; w < wanted.size() && wanted[w] < start + count; ++w)
+      for (int a = 0; a < 3; ++a) out[3 * w + a] = x[a][static_cast<std::size_t>(wanted[w] - start)];
   }
   return out;
 }
@@ -194,13 +195,9 @@ ExodusExtent exodusExtent(const DiscretizationSpec& spec, const std::string& inp
   ExodusExtent e;
   e.elements = f.summary().elements;
   e.lo.fill(HUGE_VAL), e.hi.fill(-HUGE_VAL);
-  const int dim = f.summary().dimension;
   std::vector<double> x[3];
   for (long long start = 1; start <= f.summary().nodes; start += kChunk) {
-    const long long count = std::min(kChunk, f.summary().nodes - start + 1);
-    for (auto& v : x) v.assign(static_cast<std::size_t>(count), 0.0);
-    f.check(ex_get_partial_coord(f.id(), start, count, x[0].data(), x[1].data(), dim > 2 ? x[2].data() : nullptr),
-            "ex_get_partial_coord");
+    readCoordinateChunk(f, start, x);
     for (int a = 0; a < 3; ++a)
       for (double v : x[a]) e.lo[a] = std::min(e.lo[a], v), e.hi[a] = std::max(e.hi[a], v);
   }

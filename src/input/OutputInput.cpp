@@ -23,7 +23,6 @@ namespace {
 
 using S = ParameterSpec;
 
-
 void checkVariable(const std::string& var, bool dynamic, const std::string& file, const std::string& path,
                    const std::string& param) {
   const std::vector<std::string>& known = knownOutputVariables();

@@ -8,7 +8,10 @@
 namespace pf {
 
 void ComputeClasses::add(const ComputeSpec& spec, std::vector<int> points, bool vector) {
-  computes_.push_back({spec, std::move(points), vector});
+  // Nearest_Point_Data reads one point, which only its owner holds: a sum over the ranks delivers it.
+  const ComputeSpec::Calculation calc =
+      spec.kind == ComputeSpec::Kind::NearestPointData ? ComputeSpec::Calculation::Sum : spec.calculation;
+  computes_.push_back({spec, std::move(points), vector, calc});
 }
 
 std::vector<std::string> ComputeClasses::names() const {
@@ -28,16 +31,14 @@ std::vector<double> ComputeClasses::evaluate(const Communicator& comm,
   std::vector<int> where;  // per output value: its index into sums (>= 0) or extremes (-1 - index)
   const double lowest = std::numeric_limits<double>::lowest();
   for (const Compute& c : computes_) {
-    const ComputeSpec::Calculation calc =
-        c.spec.kind == ComputeSpec::Kind::NearestPointData ? ComputeSpec::Calculation::Sum : c.spec.calculation;
     for (int k = 0; k < (c.vector ? 3 : 1); ++k) {
-      if (calc == ComputeSpec::Calculation::Sum) {
+      if (c.calculation == ComputeSpec::Calculation::Sum) {
         double s = 0.0;  // a point on one rank: only its owner adds
         for (int i : c.points) s += value(c.spec.variable, k, i);
         where.push_back(static_cast<int>(sums.size()));
         sums.push_back(s);
       } else {
-        const double sign = calc == ComputeSpec::Calculation::Maximum ? 1.0 : -1.0;
+        const double sign = c.calculation == ComputeSpec::Calculation::Maximum ? 1.0 : -1.0;
         double m = lowest;
         for (int i : c.points) m = std::max(m, sign * value(c.spec.variable, k, i));
         where.push_back(-1 - static_cast<int>(extremes.size()));
@@ -51,10 +52,7 @@ std::vector<double> ComputeClasses::evaluate(const Communicator& comm,
   std::vector<double> out;
   std::size_t n = 0;
   for (const Compute& c : computes_) {
-    const double sign = c.spec.kind != ComputeSpec::Kind::NearestPointData &&
-                                c.spec.calculation == ComputeSpec::Calculation::Minimum
-                            ? -1.0
-                            : 1.0;
+    const double sign = c.calculation == ComputeSpec::Calculation::Minimum ? -1.0 : 1.0;
     for (int k = 0; k < (c.vector ? 3 : 1); ++k, ++n)
       out.push_back(where[n] >= 0 ? sumAll[where[n]] : sign * extAll[-1 - where[n]]);
   }

@@ -29,6 +29,7 @@ class ComputeClasses {
     ComputeSpec spec;
     std::vector<int> points;
     bool vector = false;
+    ComputeSpec::Calculation calculation = ComputeSpec::Calculation::Sum;  // Sum for Nearest_Point_Data
   };
   std::vector<Compute> computes_;
 };

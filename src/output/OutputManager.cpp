@@ -20,16 +20,8 @@
 namespace pf {
 namespace {
 
-// The core's fields (core/OutputFields.hpp); everything else must be a material output field.
-const std::vector<std::string>& kVectors = coreVectorFields();
-const std::vector<std::string>& kGlobals = globalFields();  // written as Exodus global variables
-
 // Peridigm requests "Element_Id" but writes the variable as "ID"; exodiff against its gold files needs the same.
 std::string exodusName(const std::string& var) { return var == "Element_Id" ? "ID" : var; }
-
-bool contains(const std::vector<std::string>& v, const std::string& s) {
-  return std::find(v.begin(), v.end(), s) != v.end();
-}
 
 }  // namespace
 
@@ -50,13 +42,13 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
       addCompute(*compute);
       continue;
     }
-    if (contains(kGlobals, var)) {
+    if (isGlobalField(var)) {
       requireGlobal(var, out.listName + "/Output Variables");
       globals_.push_back(var);
       continue;
     }
     requireComputed(var, out.listName + "/Output Variables");
-    (contains(kVectors, var) ? nodalVectors_ : elementScalars_).push_back(var);
+    (isCoreVectorField(var) ? nodalVectors_ : elementScalars_).push_back(var);
   }
   findElementVariablesOfBlocks();
   for (const ProbeSpec& p : out.probes) probes_.push_back(locateProbe(p, out.listName));
@@ -74,7 +66,6 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
 bool OutputManager::dummyNodeFile() const {
   return nodalVectors_.empty() && elementScalars_.empty() && (!globals_.empty() || !computes_.empty());
 }
-
 
 // Collective: rank 0 gets every point's block in cloud order, for the Exodus file's element blocks, as runs of
 // points of one block (chunk by chunk: no per-point list; a few runs per block).
@@ -128,7 +119,6 @@ void OutputManager::onRoot(const std::function<void()>& write, bool everyRank) {
   });
 }
 
-
 // Rank 0: the lock first (a second run on the name must not touch the first one's parts), then the writers.
 void OutputManager::openFiles() {
   files_ = std::make_unique<OutputFiles>(baseName_, exodus_ ? std::vector<std::string>{".csv", ".e"}
@@ -155,7 +145,7 @@ void OutputManager::openWriters(bool append) {
     for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(w.name) + "_" + c);
   for (const Probe& p : probes_)
     for (const std::string& var : p.variables) {
-      if (contains(kVectors, var))
+      if (isCoreVectorField(var))
         for (const char* c : {"X", "Y", "Z"}) cols.push_back("Probe_" + label(p.name) + "_" + var + c);
       else
         cols.push_back("Probe_" + label(p.name) + "_" + var);
@@ -237,7 +227,7 @@ std::vector<double> OutputManager::historyRow(const StepReport& report, const st
   local.insert(local.end(), model_.wallReactions().begin(), model_.wallReactions().end());
   for (const Probe& p : probes_)
     for (const std::string& var : p.variables) {
-      const int ncomp = contains(kVectors, var) ? 3 : 1;
+      const int ncomp = isCoreVectorField(var) ? 3 : 1;
       for (int c = 0; c < ncomp; ++c) local.push_back(p.local >= 0 ? nodeValue(var, c, p.local, u, v, f) : 0.0);
     }
   std::vector<double> global(local.size());

@@ -14,12 +14,21 @@ namespace pf {
 
 namespace {
 
-bool contains(const std::vector<std::string>& v, const std::string& s) {
-  return std::find(v.begin(), v.end(), s) != v.end();
+// The owned-local indices of the points whose gid is in `gids` (ascending): a node set's, a probe's.
+std::vector<int> ownedIndicesOf(const Model& model, const std::vector<int>& gids) {
+  std::vector<int> out;
+  const std::vector<int>& mine = model.layout().gids();
+  for (int i = 0; i < model.numOwned(); ++i)
+    if (std::binary_search(gids.begin(), gids.end(), mine[i])) out.push_back(i);
+  return out;
 }
 
-const std::vector<std::string>& kVectors = coreVectorFields();
-const std::vector<std::string>& kCoreScalars = coreScalarFields();
+// Whether a material declares `field` as a per-node state (what it computes and the output layer may write).
+bool declaresNodeField(const Material& material, const std::string& field) {
+  for (const StateSpec& s : material.stateSpecs())
+    if (s.name == field && s.where == Location::Node) return true;
+  return false;
+}
 
 }  // namespace
 
@@ -28,7 +37,6 @@ void OutputManager::addCompute(const ComputeSpec& spec) {
   const std::string where = inputFile_ + ": Compute Class Parameters/" + spec.name;
   requireComputed(spec.variable, "Compute Class Parameters/" + spec.name + "/Variable");
   std::vector<int> points;
-  const std::vector<int>& gids = model_.layout().gids();
   if (spec.kind == ComputeSpec::Kind::BlockData) {
     for (const BlockModel& b : model_.blocks())
       if (b.blockId == spec.block)
@@ -36,17 +44,14 @@ void OutputManager::addCompute(const ComputeSpec& spec) {
     if (model_.sum(static_cast<double>(points.size())) == 0.0)
       throw InputError(where + ": 'Block' = 'block_" + std::to_string(spec.block) + "' has no points");
   } else if (spec.kind == ComputeSpec::Kind::NodeSetData) {
-    const std::vector<int>& set = pb_.nodeSets.at(spec.nodeSet);  // gids of owned points, ascending
-    for (int i = 0; i < model_.numOwned(); ++i)
-      if (std::binary_search(set.begin(), set.end(), gids[i])) points.push_back(i);
+    points = ownedIndicesOf(model_, pb_.nodeSets.at(spec.nodeSet));  // the set: gids of owned points, ascending
   } else {
     double d2 = 0.0, at[3];
     const int id = nearestPoint(spec.at.data(), &d2, at);
     if (id < 0) throw InputError(where + ": no point is nearest to the position (a non-finite coordinate)");
-    for (int i = 0; i < model_.numOwned(); ++i)
-      if (gids[i] == id) points.push_back(i);
+    points = ownedIndicesOf(model_, {id});
   }
-  computes_.add(spec, points, contains(kVectors, spec.variable));
+  computes_.add(spec, points, isCoreVectorField(spec.variable));
 }
 
 // The names are known to the input layer; whether this run's materials compute them is known here.
@@ -54,7 +59,7 @@ void OutputManager::addCompute(const ComputeSpec& spec) {
 // rank-local answer stopped one rank while the others went on and waited for it). Points of a material
 // without the variable write 0 (elementScalar).
 void OutputManager::requireComputed(const std::string& var, const std::string& where) const {
-  if (contains(kVectors, var) || contains(kCoreScalars, var)) return;
+  if (isCoreVectorField(var) || isCoreScalarField(var)) return;
   const StateStore& state = model_.state();
   const bool here = state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node;
   if (model_.layout().comm().max(here ? 1.0 : 0.0) == 0.0)
@@ -76,13 +81,10 @@ void OutputManager::requireGlobal(const std::string& var, const std::string& whe
         throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs a Rigid Wall boundary condition");
       return;
     }
-    for (const BlockModel& b : model_.blocks()) {
-      bool declared = false;
-      for (const StateSpec& s : b.material->stateSpecs()) declared = declared || (s.name == f && s.where == Location::Node);
-      if (!declared)
+    for (const BlockModel& b : model_.blocks())
+      if (!declaresNodeField(*b.material, f))
         throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs '" + f + "' from every material, and material '" +
                          b.materialName + "' (" + b.name + ") does not compute it");
-    }
   });
   for (const BlockModel& b : model_.blocks()) b.material->enableOutput(f);
 }
@@ -143,9 +145,8 @@ OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::s
   }
   Probe probe{p.name, -1, p.variables};
   for (const std::string& var : probe.variables) requireComputed(var, listName + "/Probes/" + p.name);
-  const std::vector<int>& gids = model_.layout().gids();
-  for (int i = 0; i < model_.numOwned(); ++i)
-    if (gids[i] == best) probe.local = i;
+  const std::vector<int> owner = ownedIndicesOf(model_, {best});
+  if (!owner.empty()) probe.local = owner.front();
   if (model_.layout().rank() == 0)
     std::printf("probe %s: node %d at (%g, %g, %g)\n", p.name.c_str(), best + 1, xb[0], xb[1], xb[2]);
   return probe;
@@ -155,14 +156,8 @@ OutputManager::Probe OutputManager::locateProbe(const ProbeSpec& p, const std::s
 void OutputManager::addReactions(const OutputSpec& out) {
   const std::vector<std::string>& sets = out.reactionsGiven ? out.reactions : pb_.prescribedNodeSets;
   const std::vector<std::string>& labels = out.reactionsGiven ? out.reactionNames : pb_.prescribedNodeSets;
-  const std::vector<int>& gids = model_.layout().gids();
-  for (std::size_t k = 0; k < sets.size(); ++k) {
-    Reaction r{sets[k], labels[k], {}};
-    const std::vector<int>& set = pb_.nodeSets.at(sets[k]);  // gids of owned points, ascending
-    for (int i = 0; i < model_.numOwned(); ++i)
-      if (std::binary_search(set.begin(), set.end(), gids[i])) r.nodes.push_back(i);
-    reactions_.push_back(r);
-  }
+  for (std::size_t k = 0; k < sets.size(); ++k)  // a set: gids of owned points, ascending
+    reactions_.push_back(Reaction{sets[k], labels[k], ownedIndicesOf(model_, pb_.nodeSets.at(sets[k]))});
 }
 
 // Collective: per block id of the whole cloud, which element variables its material computes (the core's are
@@ -173,11 +168,8 @@ void OutputManager::findElementVariablesOfBlocks() {
   std::vector<double> mine;
   for (const BlockModel& b : model_.blocks()) {
     mine.push_back(b.blockId);
-    for (const std::string& var : elementScalars_) {
-      bool has = contains(kCoreScalars, var);
-      for (const StateSpec& s : b.material->stateSpecs()) has = has || (s.name == var && s.where == Location::Node);
-      mine.push_back(has ? 1.0 : 0.0);
-    }
+    for (const std::string& var : elementScalars_)
+      mine.push_back(isCoreScalarField(var) || declaresNodeField(*b.material, var) ? 1.0 : 0.0);
   }
   const std::vector<double> all = model_.layout().comm().allGather(mine);
   elementVariablesOf_.clear();
