@@ -1,6 +1,7 @@
 #include "ElasticMaterial.hpp"
 
 #include "OsbKernels.hpp"
+#include "OsbThermalKernels.hpp"
 #include "SolidParameters.hpp"
 
 namespace pf {
@@ -9,10 +10,16 @@ ElasticMaterial::ElasticMaterial(const MaterialInput& in)
     : moduli_(elasticModuliFrom(in)), dim_(dimensionFrom(in, &thickness_)), density_(in.get("Density")),
       osb_(osbConstants(dim_, moduli_)) {
   ignoredShearCorrection(in, "Elastic");
+  thermalCoefficient_ = thermalExpansionOf(in, dim_, moduli_);
+}
+
+std::vector<std::string> ElasticMaterial::fieldsRead() const {
+  if (thermalCoefficient_ == 0.0) return {};
+  return {"Temperature_Change"};
 }
 
 MaterialEntry ElasticMaterial::entry() {
-  return {"Elastic", "linear ordinary state-based solid", elasticSolidParameters(),
+  return {"Elastic", "linear ordinary state-based solid", withThermalExpansion(elasticSolidParameters()),
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticMaterial(in)); },
           {"Dilatation", "Stored_Elastic_Energy"}};
 }
@@ -31,7 +38,11 @@ void ElasticMaterial::enableOutput(const std::string& name) const {
 void ElasticMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                    double* force) const {
   double* theta = state.trial("Dilatation");
-  osbElasticDilatationAndForce(fam, osb_, y, theta, force);
+  if (thermalCoefficient_ != 0.0)
+    osbThermoelasticDilatationAndForce(fam, osb_, thermalCoefficient_, fam.fields->find("Temperature_Change"), y,
+                                       theta, force);
+  else
+    osbElasticDilatationAndForce(fam, osb_, y, theta, force);
   // Peridigm's Stored_Elastic_Energy: an extra bond pass, so only when an output asks for it.
   if (energyWanted_) osbElasticEnergy(fam, moduli_, y, theta, state.trial("Stored_Elastic_Energy"));
 }

@@ -2,7 +2,9 @@
 // "Elastic": the linear ordinary state-based peridynamic solid (Silling et al. 2007; Pirzadeh et al.
 // 2024 Eqs. 3-13) in 3D, plane stress and plane strain. Declares the node field Dilatation and, in 3D,
 // Stored_Elastic_Energy = V_i W_i with Peridigm's energy density W = kappa theta^2/2 + (15 mu/(2 m))
-// sum omega e^d e^d V_j (computed in an extra bond pass only once an output asks for it).
+// sum omega e^d e^d V_j (computed in an extra bond pass only once an output asks for it). With a Thermal
+// Expansion Coefficient it reads Temperature_Change and subtracts the free thermal extension of each bond
+// (materials/OsbThermalKernels.hpp).
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
 #include "OsbConstants.hpp"
@@ -18,11 +20,13 @@ class ElasticMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
-  bool hasForceDerivative() const override { return true; }
+  // With thermal expansion the implicit solvers differentiate numerically (the thermal kernel has no tangent yet).
+  bool hasForceDerivative() const override { return thermalCoefficient_ == 0.0; }
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
   void enableOutput(const std::string& name) const override;
   bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
+  std::vector<std::string> fieldsRead() const override;
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 
@@ -36,6 +40,8 @@ class ElasticMaterial : public Material {
   Dimension dim_;
   double density_;
   OsbConstants osb_;
+  // Thermal Expansion Coefficient times the plane-strain factor (materials/OsbThermalKernels.hpp); 0: none.
+  double thermalCoefficient_ = 0.0;
   mutable bool energyWanted_ = false;  // set by enableOutput("Stored_Elastic_Energy") before the run
 };
 

@@ -2,6 +2,7 @@
 // core/MaterialEntry.hpp. Adding a model = one file pair in materials/ plus one line here.
 #include "core/MaterialEntry.hpp"
 
+#include "DiffusionMaterial.hpp"
 #include "DruckerPragerCorrespondenceMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
@@ -21,6 +22,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticCorrespondenceMaterial::entry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
+      DiffusionMaterial::entry(),
   };
   return entries;
 }

@@ -3,6 +3,7 @@
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "core/MaterialEntry.hpp"
+#include "ElasticModuli.hpp"
 
 namespace pf {
 
@@ -50,6 +51,19 @@ bool ignoredShearCorrection(const MaterialInput& in, const std::string& model) {
     warn(in.inputFile + ": material '" + in.name + "': 'Apply Shear Correction Factor' = true is ignored: "
          "Peridigm's '" + model + "' model has no shear correction (it ignores the parameter too)");
   return false;
+}
+
+std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params) {
+  params.push_back(ParameterSpec::real("Thermal Expansion Coefficient",
+                                       "linear thermal expansion coefficient alpha [1/K]; the material then reads the "
+                                       "Temperature field (docs/input.md, \"Temperature\"), relative to each point's "
+                                       "start temperature"));
+  return params;
+}
+
+double thermalExpansionOf(const MaterialInput& in, Dimension dim, const ElasticModuli& moduli) {
+  const double alpha = in.get("Thermal Expansion Coefficient", 0.0);
+  return dim == Dimension::PlaneStrain ? (1.0 + moduli.poisson) * alpha : alpha;
 }
 
 }  // namespace pf

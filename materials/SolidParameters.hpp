@@ -25,4 +25,11 @@ bool shearCorrectionOf(const MaterialInput& in, Dimension dim);
 // IgnoredAsPeridigm: warns when the deck asks for it; always false.
 bool ignoredShearCorrection(const MaterialInput& in, const std::string& model);
 
+// The parameters plus Peridigm's "Thermal Expansion Coefficient" (for a model that honours it).
+std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params);
+struct ElasticModuli;
+// The coefficient a of the thermal extension a dT |xi| (materials/OsbThermalKernels.hpp) or of the thermal strain
+// a dT (correspondence): alpha in 3D and plane stress, (1 + nu) alpha in plane strain; 0 when not given.
+double thermalExpansionOf(const MaterialInput& in, Dimension dim, const ElasticModuli& moduli);
+
 }  // namespace pf

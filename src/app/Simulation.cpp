@@ -9,6 +9,7 @@
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "core/Material.hpp"
+#include "core/SolverEntry.hpp"
 #include "input/Deck.hpp"
 #include "model/ModelBuilder.hpp"
 #include "output/OutputManager.hpp"
@@ -143,7 +144,12 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
   CheckpointData restart;
   std::unique_ptr<RestartPoint> from;
   if (!restartFile.empty()) from = std::make_unique<RestartPoint>(restartFrom(restartFile, deck, problem, u, v, restart));
-  for (const auto& s : solvers) s->check(model);
+  for (std::size_t k = 0; k < solvers.size(); ++k) {
+    if (findSolver(deck.solvers[k].type)->solves == "Displacement" && !model.hasForceModel())
+      throw InputError(inputFile + ": " + deck.solvers[k].listName + ": solver '" + deck.solvers[k].type +
+                       "' advances the displacement, but no block has a force model (Diffusion blocks only conduct heat)");
+    solvers[k]->check(model);
+  }
   OutputFanout output(comm);
   std::unique_ptr<Checkpointer> checkpointer;  // or null: no Restart list; the fanout calls it after each step
   try {

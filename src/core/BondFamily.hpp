@@ -6,6 +6,8 @@
 #include <functional>
 #include <vector>
 
+#include "FieldValues.hpp"
+
 namespace pf {
 
 struct BondFamily {
@@ -78,6 +80,10 @@ struct FamilyView {
   // reads any row. Null: one-pass evaluation.
   double* exchange = nullptr;
   int exchangeStride = 0;
+  // The model's nodal fields beside the displacement (core/FieldValues.hpp), for a material that reads one
+  // (Material::fieldsRead); null when the model holds none. Every further field a material couples to comes
+  // through here, not as one more member of this view.
+  const FieldValues* fields = nullptr;
 };
 
 inline FamilyView makeView(const BondFamily& f, int begin, int end, const double* x, const double* volume,

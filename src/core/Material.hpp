@@ -86,6 +86,15 @@ class Material {
   // it with a model that does not is refused at input.
   virtual bool supportsSurfaceBand() const { return false; }
 
+  // The nodal fields (core/FieldValues.hpp) computeForce reads through FamilyView::fields, e.g.
+  // "Temperature_Change" for thermal expansion. A deck whose model does not hold one of them is refused at
+  // input, so a material never runs without a field it was given parameters for.
+  virtual std::vector<std::string> fieldsRead() const { return {}; }
+
+  // False for a block that only carries a field operator (Peridigm's Diffusion): no force, no stiffness; a solver
+  // of the displacement refuses a model none of whose blocks has a force model.
+  virtual bool hasForceModel() const { return true; }
+
   virtual double density() const = 0;
   virtual Dimension dimension() const = 0;
 };

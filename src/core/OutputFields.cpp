@@ -16,6 +16,11 @@ const std::vector<std::string>& coreScalarFields() {
   return v;
 }
 
+const std::vector<std::string>& fieldScalarOutputs() {
+  static const std::vector<std::string> v = {"Temperature", "Temperature_Change", "Flux_Divergence"};
+  return v;
+}
+
 const std::vector<std::string>& globalFields() {
   static const std::vector<std::string> v = {"Global_Kinetic_Energy", "Global_Strain_Energy", "Global_Dissipated_Energy",
                                              "Global_Wall_Energy_Loss"};

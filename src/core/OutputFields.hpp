@@ -8,6 +8,9 @@ namespace pf {
 
 const std::vector<std::string>& coreVectorFields();  // 3 components per node: "Displacement", ...
 const std::vector<std::string>& coreScalarFields();  // one value per node: "Volume", "Horizon", ...
+// One value per node of a field beside the displacement (model/FieldSet.hpp), written as Exodus nodal variables:
+// "Temperature", "Temperature_Change", ...; only when the run holds that field.
+const std::vector<std::string>& fieldScalarOutputs();
 const std::vector<std::string>& globalFields();      // one value per step: "Global_Kinetic_Energy", ...
 bool isCoreVectorField(const std::string& name);
 bool isCoreScalarField(const std::string& name);

@@ -23,6 +23,9 @@ struct SolverEntry {
   // Load Steps" (or a "Time Steps" list, where declared); the others run from Initial to Final Time.
   bool loadSteps = false;
   bool dynamic = false;  // integrates inertia: its velocities are physical and it may write Acceleration
+  // The field it advances: "Displacement" (the mechanics solvers) or "Temperature" (ImplicitDiffusion). The deck's
+  // Solver flags `Solve For Displacement` / `Solve For Temperature` must agree with it.
+  std::string solves = "Displacement";
   std::function<std::unique_ptr<Solver>(const ParameterValues& options, const ParamTree& passThrough)> create;
 };
 

@@ -70,13 +70,14 @@ std::vector<ParameterSpec> regionSpecs() {
 
 std::vector<ParameterSpec> conditionSpecs() {
   return {S::text("Type", "`Prescribed Displacement`, `Initial Displacement`, `Initial Velocity`, `Body Force`, "
-                          "`Pressure` (on the surface whose outer layer of points is the node set); `Rigid Wall` "
-                          "has its own parameters (below)")
+                          "`Pressure` (on the surface whose outer layer of points is the node set), `Prescribed "
+                          "Temperature`, `Initial Temperature` (the Temperature field, docs/input.md \"Temperature\"); "
+                          "`Rigid Wall` has its own parameters (below)")
               .need().oneOf({"Prescribed Displacement", "Initial Displacement", "Initial Velocity", "Body Force",
-                             "Pressure", "Rigid Wall"}),
+                             "Pressure", "Prescribed Temperature", "Initial Temperature", "Rigid Wall"}),
           S::text("Node Set", "a node-set name (`All`: every node, unless the deck defines its own `All`)").need(),
           S::text("Coordinate", "`x`, `y` or `z`; required, except for `Pressure` (which acts along the surface's "
-                                "normal)").oneOf({"x", "y", "z"}),
+                                "normal) and the temperature conditions (a scalar)").oneOf({"x", "y", "z"}),
           S::scalar("Value", "expression in `x`, `y`, `z` (reference coordinates) and `t`; for `Pressure` the "
                              "pressure [Pa], positive pushing on the body").need(),
           S::real("Layer Thickness", "`Pressure` only: thickness of the surface layer the node set holds; a point of "
@@ -142,8 +143,15 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
              : type == "Initial Displacement"  ? K::InitialDisplacement
              : type == "Initial Velocity"      ? K::InitialVelocity
              : type == "Body Force"            ? K::BodyForce
+             : type == "Prescribed Temperature" ? K::PrescribedTemperature
+             : type == "Initial Temperature"   ? K::InitialTemperature
                                                : K::Pressure;
-    if (c.kind == K::Pressure) {
+    const bool scalar = c.kind == K::PrescribedTemperature || c.kind == K::InitialTemperature;
+    if (scalar) {
+      if (v.has("Coordinate")) fail(file, bpath, "'Coordinate' does not apply to a " + type + " (a scalar field)");
+      if (v.has("Layer Thickness")) fail(file, bpath, "'Layer Thickness' applies to a Pressure only");
+      if (v.flag("Follower")) fail(file, bpath, "'Follower' applies to a Pressure only");
+    } else if (c.kind == K::Pressure) {
       if (v.has("Coordinate")) fail(file, bpath, "'Coordinate' does not apply to a Pressure (it acts along the normal)");
       c.layerThickness = v.get("Layer Thickness", 0.0);
       c.follower = v.flag("Follower");

@@ -16,7 +16,11 @@ std::vector<ParameterSpec> criticalStretchSpecs() {
           S::real("Critical Stretch",
                   "s_c: a bond breaks, for good, once (|y_j − y_i| − |ξ|)/|ξ| > s_c (tension only, as Peridigm)")
               .need()
-              .positive()};
+              .positive(),
+          S::real("Thermal Expansion Coefficient",
+                  "Peridigm's: the stretch tested is less the thermal strain alpha dT. Periforge always tests the "
+                  "stretch less the block material's own thermal strain, so this must equal the material's "
+                  "`Thermal Expansion Coefficient` (an input error otherwise)")};
 }
 
 std::vector<ParameterSpec> maximumPrincipalStressSpecs() {
@@ -50,7 +54,9 @@ std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string
       fail(file, path, "unknown 'Damage Model' = '" + model + "' (known: '" + kCriticalStretch + "', '" +
                            kMaxPrincipal + "')");
     const ParameterValues v = readList(d, criticalStretchSpecs(), {}, file, path);
-    out.push_back(DamageModelSpec{name, model, v.get("Critical Stretch"), 0.0});
+    DamageModelSpec spec{name, model, v.get("Critical Stretch"), 0.0};
+    spec.thermalExpansion = v.get("Thermal Expansion Coefficient", -1.0);
+    out.push_back(spec);
   }
   return out;
 }

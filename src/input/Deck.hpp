@@ -65,6 +65,7 @@ struct DamageModelSpec {
   std::string model;                  // "Critical Stretch" or "Maximum Principal Stress"
   double criticalStretch = 0.0;       // > 0 for Critical Stretch, else 0
   double tensileStrength = 0.0;       // > 0 for Maximum Principal Stress, else 0
+  double thermalExpansion = -1.0;     // Critical Stretch's Thermal Expansion Coefficient; < 0: not given
 };
 
 struct BlockGroupSpec {
@@ -89,11 +90,19 @@ struct NodeSetSpec {
 };
 
 struct ConditionSpec {
-  enum class Kind { PrescribedDisplacement, InitialDisplacement, InitialVelocity, BodyForce, Pressure };
+  enum class Kind {
+    PrescribedDisplacement,
+    InitialDisplacement,
+    InitialVelocity,
+    BodyForce,
+    Pressure,
+    PrescribedTemperature,  // the Temperature field (model/FieldSet.hpp): imposed at every evaluated time
+    InitialTemperature      // its value at the start time
+  };
   std::string name;                   // the sub-list name
   Kind kind = Kind::PrescribedDisplacement;
   std::string nodeSet;                // a NodeSetSpec, a generated set or "All"
-  int coordinate = 0;                 // 0, 1, 2 (not for Pressure)
+  int coordinate = 0;                 // 0, 1, 2 (not for Pressure or the temperature conditions)
   std::shared_ptr<const Expression> value;
   double layerThickness = 0.0;        // Pressure: the surface layer's thickness; 0 = the grid spacing
   bool follower = false;              // Pressure: acts on the deformed surface (needs the NDO band)

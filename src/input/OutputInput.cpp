@@ -10,7 +10,7 @@ namespace pf {
 const std::vector<std::string>& knownOutputVariables() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n = coreVectorFields();
-    for (const auto* list : {&coreScalarFields(), &globalFields()}) n.insert(n.end(), list->begin(), list->end());
+    for (const auto* list : {&coreScalarFields(), &fieldScalarOutputs(), &globalFields()}) n.insert(n.end(), list->begin(), list->end());
     for (const MaterialEntry& e : materialRegistry())
       for (const std::string& o : e.outputs)
         if (std::find(n.begin(), n.end(), o) == n.end()) n.push_back(o);

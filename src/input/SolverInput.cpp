@@ -70,7 +70,28 @@ std::vector<ParameterSpec> solverListSpecs() {
                                              "pair-stiffness matrix whatever the value")
               .oneOf({"Full Tangent", "Block 3x3", "None"}),
           S::flag("Initialize Predictor From Previous Solver",
-                  "Peridigm's; accepted: each solver starts from the previous one's end state either way")};
+                  "Peridigm's; accepted: each solver starts from the previous one's end state either way"),
+          S::flag("Solve For Displacement", "Peridigm's: whether the solver advances the displacement; must agree "
+                                            "with the solver (true for all but ImplicitDiffusion)"),
+          S::flag("Solve For Temperature", "Peridigm's: whether the solver advances the Temperature field; true for "
+                                           "ImplicitDiffusion only"),
+          S::flag("Solve For Pressure", "Peridigm's fluid-pressure field: not available (true is an input error)")};
+}
+
+// Peridigm's "Solve For ..." flags name the fields a solver advances: they must agree with what the solver does.
+void requireSolvedFields(const ParameterValues& list, const SolverEntry& entry, const std::string& file,
+                         const std::string& path) {
+  if (list.has("Solve For Pressure") && list.flag("Solve For Pressure")) fail(file, path, "'Solve For Pressure' = true: Peridigm's fluid-pressure field is not available");
+  for (const std::string field : {"Displacement", "Temperature"}) {
+    const std::string flag = "Solve For " + field;
+    if (!list.has(flag)) continue;
+    const bool solves = entry.solves == field;
+    if (list.flag(flag) != solves)
+      fail(file, path, "'" + flag + "' = " + (solves ? "false" : "true") + " but solver '" + entry.name + "' " +
+                           (solves ? "advances" : "does not advance") + " the " + field +
+                           (field == "Temperature" && !solves ? " (ImplicitDiffusion does; a coupled heat solve in the "
+                                                                "mechanics solvers is not available yet)" : ""));
+  }
 }
 
 SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& path) {
@@ -92,6 +113,7 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
     if (s.isSublist(e.name)) spec.type = e.name;
   const SolverEntry& entry = *findSolver(spec.type);
   const std::string sp = path + "/" + spec.type;
+  requireSolvedFields(list, entry, file, path);
   const PL& sub = s.sublist(spec.type);
   spec.options = readList(sub, entry.parameters, entry.passThrough, file, sp);
   for (const std::string& n : entry.passThrough)

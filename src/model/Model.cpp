@@ -81,6 +81,7 @@ FamilyView Model::view(const BlockModel& b) {
     if (b.tensileStrength > 0.0) v.tensileStrength = frozen ? HUGE_VAL : b.tensileStrength;
   }
   if (yieldRounds_) v.admitted = admitted_.data();  // else null: every point may yield
+  if (!fields_.empty()) v.fields = &fields_.values();
   return v;
 }
 
@@ -112,6 +113,7 @@ void Model::internalForce(const double* u, double* f) {
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
   updateFollowerLoads();
+  imposeFields();
   // A material that fails on one rank (a return mapping that does not converge there) must fail on every
   // rank before the collective exportAdd, or the others wait in it forever: one allreduce per evaluation.
   collectively(layout_->comm(), [&] {
@@ -143,7 +145,74 @@ void Model::commit() {
   if (wantsPositions() && !yEvaluated_.empty()) yCommitted_ = yEvaluated_;
 }
 
+void Model::addField(const std::string& name) { fields_.add(name, state_, numOwned(), layout_->family().numBonds()); }
+
+void Model::imposeFields() {
+  if (fields_.empty()) return;
+  if (!fieldsStarted_) fields_.start(startTime_, x_, state_), fieldsStarted_ = true;
+  fields_.impose(time_, x_, state_, *layout_);
+  if (time_ != fieldLoadTime_) updateFieldLoad();
+}
+
+// The reference configuration's force of the blocks that read a field, in scratch arrays: the trial state it
+// writes (a dilatation, bond flags) is rewritten by the evaluation that follows.
+void Model::updateFieldLoad() {
+  fieldLoadTime_ = time_;
+  bool reads = false;
+  for (const BlockModel& b : blocks_) reads = reads || !b.material->fieldsRead().empty();
+  if (layout_->max(reads ? 1.0 : 0.0) == 0.0) return;
+  std::vector<double> f(fOverlap_.size(), 0.0), owned(static_cast<std::size_t>(numDofs()), 0.0);
+  for (const BlockModel& b : blocks_)
+    if (!b.material->fieldsRead().empty()) b.material->computeForce(view(b), x_.data(), state_, f.data());
+  layout_->exportAdd(f.data(), owned.data(), 3);
+  double s = 0.0;
+  for (std::size_t k = 0; k < owned.size(); ++k) s += owned[k] * owned[k] * volume_[k / 3] * volume_[k / 3];
+  fieldLoad_ = std::sqrt(sum(s));
+}
+
+void Model::requireFieldsRead(const std::string& inputFile) const {
+  collectively(layout_->comm(), [&] {
+    for (const BlockModel& b : blocks_)
+      for (const std::string& f : b.material->fieldsRead()) {
+        const std::string base = f.size() > 7 && f.compare(f.size() - 7, 7, "_Change") == 0 ? f.substr(0, f.size() - 7) : f;
+        if (!fields_.has(base))
+          throw InputError(inputFile + ": Materials/" + b.materialName + ": its material reads the field '" + base +
+                           "', which this deck does not set: give it a 'Prescribed " + base + "' or 'Initial " + base +
+                           "' boundary condition");
+      }
+  });
+}
+
+void Model::fieldRate(const std::string& field, const double* owned, double* rate) {
+  fieldOverlap_.resize(static_cast<std::size_t>(layout_->numOverlap()));
+  layout_->importToOverlap(owned, fieldOverlap_.data(), 1);
+  std::fill(rate, rate + numOwned(), 0.0);
+  for (const BlockModel& b : blocks_)
+    if (b.fieldOperator && b.fieldOperator->field() == field) b.fieldOperator->apply(view(b), fieldOverlap_.data(), rate);
+}
+
+void Model::fieldDiagonal(const std::string& field, double* diag) const {
+  std::fill(diag, diag + numOwned(), 0.0);
+  for (const BlockModel& b : blocks_)
+    if (b.fieldOperator && b.fieldOperator->field() == field) b.fieldOperator->diagonal(blockView(b), diag);
+}
+
+bool Model::hasOperator(const std::string& field) const {
+  double mine = 0.0;
+  for (const BlockModel& b : blocks_)
+    if (b.fieldOperator && b.fieldOperator->field() == field) mine = 1.0;
+  return max(mine) > 0.0;
+}
+
+bool Model::hasForceModel() const {
+  double mine = 0.0;
+  for (const BlockModel& b : blocks_)
+    if (b.material->hasForceModel()) mine = 1.0;
+  return max(mine) > 0.0;
+}
+
 void Model::setCommittedDisplacement(const double* u) {
+  fieldsStarted_ = true;  // a restart: the fields' values and start values came with the checkpoint
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   yCommitted_.resize(x_.size());
   for (std::size_t k = 0; k < yCommitted_.size(); ++k) yCommitted_[k] = x_[k] + uOverlap_[k];
@@ -202,21 +271,9 @@ void Model::addFollowerPressure(NodalLoad load) {
 }
 
 namespace {
-// Evaluates a load's expression at its nodes; an expression without x, y, z is evaluated once.
 template <class Apply>
 void evaluate(const NodalLoad& load, const std::vector<double>& x, double t, Apply apply) {
-  const bool scaled = !load.factor.empty();
-  const std::size_t n = load.nodes.size();
-  if (!load.value->dependsOnSpace()) {
-    const double v = (*load.value)(0.0, 0.0, 0.0, t);
-    for (std::size_t k = 0; k < n; ++k) apply(3 * load.nodes[k] + load.coordinate, scaled ? v * load.factor[k] : v);
-    return;
-  }
-  for (std::size_t k = 0; k < n; ++k) {
-    const int i = load.nodes[k];
-    const double v = (*load.value)(x[3 * i], x[3 * i + 1], x[3 * i + 2], t);
-    apply(3 * i + load.coordinate, scaled ? v * load.factor[k] : v);
-  }
+  forEachLoadValue(load, x, t, 3, apply);
 }
 }  // namespace
 

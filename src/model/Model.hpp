@@ -8,8 +8,11 @@
 #include <vector>
 
 #include "parallel/DistributedLayout.hpp"
+#include "core/FieldOperator.hpp"
 #include "core/Material.hpp"
 #include "core/StateStore.hpp"
+#include "model/FieldSet.hpp"
+#include "model/NodalLoad.hpp"
 #include "model/RigidWall.hpp"
 #include "model/SurfaceBand.hpp"
 
@@ -28,17 +31,10 @@ struct BlockModel {
   double criticalStretch = 0.0;  // the block's Critical Stretch damage model; 0: no damage model (nothing breaks)
   bool surfaceBand = false;      // Surface Correction = NDO Band (model/SurfaceBand.hpp)
   double tensileStrength = 0.0;  // the block's Maximum Principal Stress damage model (f_t); 0: not that model
+  std::shared_ptr<const FieldOperator> fieldOperator = nullptr;  // its operator on a field (heat conduction), or null
   bool damaged() const { return criticalStretch > 0.0 || tensileStrength > 0.0; }
 };
 
-// A displacement, velocity or body-force component imposed on owned nodes: value(x, t), times factor[k]
-// at nodes[k] when factor is given (a pressure's share per node and direction).
-struct NodalLoad {
-  std::vector<int> nodes;  // owned-local indices
-  int coordinate = 0;
-  std::shared_ptr<const Expression> value;
-  std::vector<double> factor;  // empty: 1 at every node
-};
 
 class Model;
 
@@ -138,6 +134,31 @@ class Model {
   // 3 per wall: this rank's share of each wall's force on the body in the last enforced step (0 before).
   const std::vector<double>& wallReactions() const { return wallReaction_; }
 
+  // The nodal fields beside the displacement (model/FieldSet.hpp): addField declares one (its state joins
+  // state()); every force evaluation first imposes its conditions of the evaluated time and ghosts it, and each
+  // block's view carries its values (FamilyView::fields). requireFieldsRead: InputError naming the first block
+  // whose material reads a field this model does not hold (Material::fieldsRead); collective verdict.
+  void addField(const std::string& name);
+  FieldSet& fields() { return fields_; }
+  const FieldSet& fields() const { return fields_; }
+  void requireFieldsRead(const std::string& inputFile) const;
+  // What every force evaluation does first, for a solver that advances a field without evaluating forces: the
+  // fields' conditions at the time of the last applyPrescribed imposed on their trial values, then ghosted.
+  void updateFields() { imposeFields(); }
+  // The load the fields put on the body at the time of the last evaluation: |f V| over every dof of the internal
+  // force at u = 0 of the blocks whose materials read a field (the force a uniform heating would make in the
+  // reference configuration, i.e. what a clamped body's supports would carry). 0 without such blocks, so the
+  // quasi-static solvers' load scale (LoadStepping.hpp) is unchanged for mechanics-only decks. Collective value.
+  double fieldLoad() const { return fieldLoad_; }
+  // The blocks' field operators (core/FieldOperator.hpp) on `field`: rate (per owned node) = their sum at the owned
+  // values `owned` (ghosted here; collective); diagonal: the sum of |dL_i/du_i|. hasOperator: whether any block on
+  // any rank has one (collective).
+  void fieldRate(const std::string& field, const double* owned, double* rate);
+  void fieldDiagonal(const std::string& field, double* diag) const;
+  bool hasOperator(const std::string& field) const;
+  // Whether any block on any rank has a force model (Material::hasForceModel); collective.
+  bool hasForceModel() const;
+
   // The NDO surface band's geometry (outer normals per owned node), or null when no block has the band.
   const SurfaceBand* surfaceBand() const { return band_.get(); }
 
@@ -157,6 +178,12 @@ class Model {
   FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
   std::unique_ptr<SurfaceBand> band_;             // null: no block has the NDO band
+  FieldSet fields_;
+  std::vector<double> fieldOverlap_;  // fieldRate's ghosted values
+  double fieldLoad_ = 0.0, fieldLoadTime_ = NAN;
+  void updateFieldLoad();
+  bool fieldsStarted_ = false;  // their start values set (FieldSet::start), or restored by a restart
+  void imposeFields();          // FieldSet::impose at time_, starting the fields first if needed
   int exchangeWidth_ = 0;                         // the widest Material::exchangeWidth of the blocks
   std::vector<double> exchange_, exchangeOwned_;  // per overlap node / owned node, exchangeWidth_ each
   void exchangeAndComplete();                     // the second phase of internalForce

@@ -24,6 +24,7 @@ struct BlockSpec {
   std::string name, materialName;
   double horizon;
   std::shared_ptr<const Material> material;
+  std::shared_ptr<const FieldOperator> fieldOperator;
   double criticalStretch = 0.0;  // 0: no damage model
   bool ndoBand = false;
   double tensileStrength = 0.0;  // Maximum Principal Stress damage; 0: not that model
@@ -34,10 +35,12 @@ struct BlockSpec {
 std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloudBlocks) {
   std::map<int, BlockSpec> blocks;
   std::map<std::string, std::shared_ptr<const Material>> built;
+  std::map<std::string, std::shared_ptr<const FieldOperator>> operators;
   auto materialOf = [&](const std::string& name) {
     if (!built.count(name)) {
       const MaterialSpec& m = deck.material(name);
       built[name] = m.entry->create(m.values);
+      if (m.entry->createOperator) operators[name] = m.entry->createOperator(m.values);
     }
     return built[name];
   };
@@ -52,12 +55,25 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
                        "Hardening and Microelastic");
+    if (d && d->thermalExpansion >= 0.0) {
+      const ParameterValues& mv = deck.material(g.material).values;
+      const double alpha = mv.has("Thermal Expansion Coefficient") ? mv.get("Thermal Expansion Coefficient") : 0.0;
+      if (d->thermalExpansion != alpha) {
+        char values[120];
+        std::snprintf(values, sizeof values, " = %g differs from the material's %g", d->thermalExpansion, alpha);
+        throw InputError(deck.file + ": Damage Models/" + g.damageModel + ": 'Thermal Expansion Coefficient'" + values +
+                         " (material '" + g.material + "'); Periforge breaks bonds on the stretch less the material's "
+                         "own thermal strain, so give the same value or leave it out");
+      }
+    }
     if (g.ndoBand && !materialOf(g.material)->supportsSurfaceBand())
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Surface Correction' = 'NDO Band': material '" +
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") has no first Piola stress; the band works with the correspondence models");
-    return BlockSpec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material),
-                     d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
+    BlockSpec spec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material), nullptr,
+                   d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
+    if (operators.count(g.material)) spec.fieldOperator = operators[g.material];
+    return spec;
   };
   for (const BlockGroupSpec& g : deck.blocks)
     for (int id : g.blockIds) blocks[id] = specOf(g, id);
@@ -192,6 +208,41 @@ void requireBlocksAndDimension(const Deck& deck, PointCloud& slab, const std::ma
   }
 }
 
+// The deck's boundary conditions on the owned points of their node sets (cloud index -> owned-local: localOf).
+void addConditions(const Deck& deck, Problem& pb, const std::unordered_map<int, int>& localOf, double spacing) {
+  const std::string& inputFile = deck.file;
+  for (const ConditionSpec& bc : deck.conditions) {
+    NodalLoad load;
+    load.coordinate = bc.coordinate;
+    load.value = bc.value;
+    for (int p : pb.nodeSets.at(bc.nodeSet)) {
+      auto it = localOf.find(p);
+      if (it != localOf.end()) load.nodes.push_back(it->second);
+    }
+    switch (bc.kind) {
+      case ConditionSpec::Kind::PrescribedDisplacement:
+        pb.model->addPrescribedDisplacement(load);
+        if (std::find(pb.prescribedNodeSets.begin(), pb.prescribedNodeSets.end(), bc.nodeSet) == pb.prescribedNodeSets.end())
+          pb.prescribedNodeSets.push_back(bc.nodeSet);
+        break;
+      case ConditionSpec::Kind::BodyForce: pb.model->addBodyForce(load); break;
+      case ConditionSpec::Kind::Pressure: addPressure(*pb.model, bc, load.nodes, spacing, inputFile); break;
+      case ConditionSpec::Kind::InitialDisplacement: pb.initialDisplacements.push_back(load); break;
+      case ConditionSpec::Kind::InitialVelocity: pb.initialVelocities.push_back(load); break;
+      case ConditionSpec::Kind::PrescribedTemperature:
+        load.coordinate = 0;
+        pb.model->addField("Temperature");
+        pb.model->fields().addPrescribed("Temperature", load);
+        break;
+      case ConditionSpec::Kind::InitialTemperature:
+        load.coordinate = 0;
+        pb.model->addField("Temperature");
+        pb.model->fields().addInitial("Temperature", load);
+        break;
+    }
+  }
+}
+
 }  // namespace
 
 Problem buildProblem(const Deck& deck, const Communicator& comm) {
@@ -231,7 +282,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
     const BlockSpec& s = blocks.at(r.blockId);
     blockModels.push_back(
         BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
-                   s.ndoBand, s.tensileStrength});
+                   s.ndoBand, s.tensileStrength, s.fieldOperator});
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;
@@ -244,26 +295,14 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   reduce.sum = [&](double v) { return comm.sum(v); };
   reduce.max = [&](double v) { return comm.max(v); };
   pb.nodeSets = resolveNodeSets(deck.nodeSets, owned, inputFile, reduce);
-  for (const ConditionSpec& bc : deck.conditions) {
-    NodalLoad load;
-    load.coordinate = bc.coordinate;
-    load.value = bc.value;
-    for (int p : pb.nodeSets.at(bc.nodeSet)) {
-      auto it = localOf.find(p);
-      if (it != localOf.end()) load.nodes.push_back(it->second);
-    }
-    switch (bc.kind) {
-      case ConditionSpec::Kind::PrescribedDisplacement:
-        pb.model->addPrescribedDisplacement(load);
-        if (std::find(pb.prescribedNodeSets.begin(), pb.prescribedNodeSets.end(), bc.nodeSet) == pb.prescribedNodeSets.end())
-          pb.prescribedNodeSets.push_back(bc.nodeSet);
-        break;
-      case ConditionSpec::Kind::BodyForce: pb.model->addBodyForce(load); break;
-      case ConditionSpec::Kind::Pressure: addPressure(*pb.model, bc, load.nodes, cloud.spacing, inputFile); break;
-      case ConditionSpec::Kind::InitialDisplacement: pb.initialDisplacements.push_back(load); break;
-      case ConditionSpec::Kind::InitialVelocity: pb.initialVelocities.push_back(load); break;
-    }
+  // A block with heat conduction gives the model its Temperature field and that field's rate output.
+  if (pb.model->hasOperator("Temperature")) {
+    pb.model->addField("Temperature");
+    pb.model->fields().addRate("Temperature", "Flux_Divergence", pb.model->state(), pb.model->numOwned(),
+                               pb.model->layout().family().numBonds());
   }
+  addConditions(deck, pb, localOf, cloud.spacing);
+  pb.model->requireFieldsRead(inputFile);
   addRigidWalls(deck, pb, localOf);
   return pb;
 }

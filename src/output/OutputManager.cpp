@@ -48,7 +48,9 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
       continue;
     }
     requireComputed(var, out.listName + "/Output Variables");
-    (isCoreVectorField(var) ? nodalVectors_ : elementScalars_).push_back(var);
+    const std::vector<std::string> fieldOutputs = model_.fields().outputs();
+    if (std::find(fieldOutputs.begin(), fieldOutputs.end(), var) != fieldOutputs.end()) nodalScalars_.push_back(var);
+    else (isCoreVectorField(var) ? nodalVectors_ : elementScalars_).push_back(var);
   }
   findElementVariablesOfBlocks();
   for (const ProbeSpec& p : out.probes) probes_.push_back(locateProbe(p, out.listName));
@@ -64,7 +66,8 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
 }
 
 bool OutputManager::dummyNodeFile() const {
-  return nodalVectors_.empty() && elementScalars_.empty() && (!globals_.empty() || !computes_.empty());
+  return nodalVectors_.empty() && nodalScalars_.empty() && elementScalars_.empty() &&
+         (!globals_.empty() || !computes_.empty());
 }
 
 // Collective: rank 0 gets every point's block in cloud order, for the Exodus file's element blocks, as runs of
@@ -154,7 +157,7 @@ void OutputManager::openWriters(bool append) {
   cols.insert(cols.end(), computed.begin(), computed.end());
   history_ = std::make_unique<HistoryWriter>(files_->part(".csv"), cols, append);
   if (!exodus_) return;
-  std::vector<std::string> scalars, elements, globals = globals_;
+  std::vector<std::string> scalars = nodalScalars_, elements, globals = globals_;
   for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
   globals.insert(globals.end(), computed.begin(), computed.end());
   if (dummyNodeFile())
@@ -263,19 +266,22 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
   std::vector<ChunkedGather::Field> fields;
   for (const std::string& var : nodalVectors_)
     fields.push_back({[&, var](int i, double* out) { for (int c = 0; c < 3; ++c) out[c] = nodeValue(var, c, i, u, v, f); }, 3});
+  for (const std::string& var : nodalScalars_)
+    fields.push_back({[&, var](int i, double* out) { *out = nodeValue(var, 0, i, u, v, f); }, 1});
   for (const std::string& var : elementScalars_)
     fields.push_back({[&, var](int i, double* out) { *out = nodeValue(var, 0, i, u, v, f); }, 1});
   if (fields.empty()) {  // globals only: Peridigm's one-dummy-node file
     onRoot([&] { writer_->writeStep(time, {}, {}, {}, globals); });
     return;
   }
-  const std::size_t nv = nodalVectors_.size();
+  const std::size_t nv = nodalVectors_.size(), ns = nv + nodalScalars_.size();
   const int numGlobal = gather_->numGlobal();
   onRoot(
       [&] {
         gather_->gather(fields, [&](int begin, int count, const std::vector<const double*>& values) {
           if (begin == 0) writer_->beginStep(time);
-          writer_->writeNodes(begin, count, {values.begin(), values.begin() + nv}, {}, {values.begin() + nv, values.end()});
+          writer_->writeNodes(begin, count, {values.begin(), values.begin() + nv}, {values.begin() + nv, values.begin() + ns},
+                              {values.begin() + ns, values.end()});
           if (begin + count == numGlobal) writer_->endStep(globals);
         });
       },

@@ -99,6 +99,7 @@ class OutputManager : public StepObserver {
   long lastStep_ = -1;     // the CSV step of the last reported step (-1: none yet), and its time
   double lastTime_ = 0.0;
   std::vector<std::string> nodalVectors_, elementScalars_, globals_;
+  std::vector<std::string> nodalScalars_;  // the model's fields (Temperature, ...): nodal, as Peridigm writes them
   std::vector<Probe> probes_;
   std::vector<Reaction> reactions_;
   std::map<int, std::vector<char>> elementVariablesOf_;  // per block id: which elementScalars_ it has

@@ -60,6 +60,15 @@ void OutputManager::addCompute(const ComputeSpec& spec) {
 // without the variable write 0 (elementScalar).
 void OutputManager::requireComputed(const std::string& var, const std::string& where) const {
   if (isCoreVectorField(var) || isCoreScalarField(var)) return;
+  const std::vector<std::string>& fieldOutputs = fieldScalarOutputs();
+  if (std::find(fieldOutputs.begin(), fieldOutputs.end(), var) != fieldOutputs.end()) {
+    const std::vector<std::string> held = model_.fields().outputs();
+    if (std::find(held.begin(), held.end(), var) == held.end())
+      throw InputError(inputFile_ + ": " + where + ": '" + var +
+                       "' needs the Temperature field: give a 'Prescribed Temperature' or 'Initial Temperature' boundary "
+                       "condition");
+    return;
+  }
   const StateStore& state = model_.state();
   const bool here = state.has(var) && state.spec(var).output && state.spec(var).where == Location::Node;
   if (model_.layout().comm().max(here ? 1.0 : 0.0) == 0.0)

@@ -28,7 +28,8 @@ ResidualNorms residualNorms(const Model& model, const std::vector<double>& f, co
   }
   double in[4] = {r2, l2, b2, rd2}, out[4];
   model.layout().comm().sum(in, out, 4);
-  return {std::sqrt(out[0]), std::sqrt(out[1]) + std::sqrt(out[2]), std::sqrt(out[3])};
+  // model.fieldLoad(): a heated body's thermal load (0 for mechanics-only models, whose scale stays as it was).
+  return {std::sqrt(out[0]), std::sqrt(out[1]) + std::sqrt(out[2]) + model.fieldLoad(), std::sqrt(out[3])};
 }
 
 void predictStep(const Model& model, double t, std::vector<double>& u, const std::vector<double>& duPrev) {

@@ -3,6 +3,7 @@
 #include "core/SolverEntry.hpp"
 
 #include "AdrSolver.hpp"
+#include "ImplicitDiffusionSolver.hpp"
 #include "ImplicitSolver.hpp"
 #include "NoxQuasiStaticSolver.hpp"
 #include "VerletSolver.hpp"
@@ -16,6 +17,7 @@ const std::vector<SolverEntry>& solverRegistry() {
       NoxQuasiStaticSolver::peridigmEntry(),
       NoxQuasiStaticSolver::entry(),
       ImplicitSolver::entry(),
+      ImplicitDiffusionSolver::entry(),
   };
   return entries;
 }

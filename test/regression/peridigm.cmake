@@ -96,7 +96,9 @@ set(peridigm_suite_cases
   "WaveInBar WaveInBar.xml WaveInBar WaveInBar.comp"
   "WaveInBar_MultiBlock WaveInBar_MultiBlock.xml WaveInBar_MultiBlock WaveInBar_MultiBlock.comp"
   "MultipleHorizons MultipleHorizons.xml MultipleHorizons MultipleHorizons.comp"
-  "Body_Force__QS_NOX Body_Force_QS_NOX.xml Body_Force_QS_NOX Body_Force.comp")
+  "Body_Force__QS_NOX Body_Force_QS_NOX.xml Body_Force_QS_NOX Body_Force.comp"
+  "ThermalExpansionCube ThermalExpansionCube.xml ThermalExpansionCube ThermalExpansionCube.comp"
+  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)

@@ -230,7 +230,11 @@ TEST(InputSchema, BoundaryConditionErrors) {
   EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "Boundary Conditions/Fix Left/Value");
   auto s = base();
   s->sublist("Boundary Conditions").sublist("Fix Left").set("Type", std::string("Prescribed Temperature"));
-  EXPECT_INPUT_ERROR(pf::parseDeck(*s, kFile), kFile, "'Type' = 'Prescribed Temperature'");
+  // A temperature condition is a scalar: the sub-list's Coordinate is refused.
+  EXPECT_INPUT_ERROR(pf::parseDeck(*s, kFile), kFile, "'Coordinate' does not apply to a Prescribed Temperature");
+  auto s2 = base();
+  s2->sublist("Boundary Conditions").sublist("Fix Left").set("Type", std::string("Prescribed Pressure"));
+  EXPECT_INPUT_ERROR(pf::parseDeck(*s2, kFile), kFile, "'Type' = 'Prescribed Pressure'");
 }
 
 TEST(InputSchema, OutputErrors) {
@@ -238,8 +242,8 @@ TEST(InputSchema, OutputErrors) {
   p->sublist("Output").sublist("Output Variables").set("Stress", true);
   EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "Output/Output Variables: unknown parameter 'Stress'");
   auto q = base();
-  q->sublist("Output").sublist("Probes").sublist("Centre").set("Variables", std::string("Temperature"));
-  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "'Temperature'");
+  q->sublist("Output").sublist("Probes").sublist("Centre").set("Variables", std::string("Heat_Flux"));
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "'Heat_Flux'");
   auto r = base();
   r->sublist("Output").set("Reactions", std::string("Min X Node Set, Nowhere"));
   EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "'Reactions' names undefined node set 'Nowhere'");

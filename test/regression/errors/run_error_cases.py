@@ -229,6 +229,54 @@ CASES = [
      [(r'<Parameter name="Final Time" type="double" value="1.0"/>\s*<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
        '<Parameter name="Final Time" type="double" value="1.0e12"/>\n    <ParameterList name="Verlet"><Parameter name="Fixed dt" type="double" value="1.0e-7"/></ParameterList>')],
      ["Solver/Verlet", "'Fixed dt'", "1e+19 steps", "2147483647"]),
+    # The Temperature field and the thermal solvers (issue 33).
+    ("thermal expansion without a temperature",
+     [('<Parameter name="Density"', '<Parameter name="Thermal Expansion Coefficient" type="double" value="1e-5"/>\n'
+       '      <Parameter name="Density"')],
+     ["Materials/Steel", "Temperature"]),
+    ("coordinate on a temperature condition",
+     [('<ParameterList name="Left X">', '<ParameterList name="Heat"><Parameter name="Type" type="string" '
+       'value="Prescribed Temperature"/><Parameter name="Node Set" type="string" value="All"/><Parameter '
+       'name="Coordinate" type="string" value="x"/><Parameter name="Value" type="string" value="300"/></ParameterList>\n'
+       '    <ParameterList name="Left X">')],
+     ["Boundary Conditions/Heat", "Coordinate"]),
+    ("temperature output without the field",
+     [('<Parameter name="Displacement" type="bool" value="true"/>',
+       '<Parameter name="Displacement" type="bool" value="true"/><Parameter name="Temperature" type="bool" value="true"/>')],
+     ["Temperature", "Prescribed Temperature"]),
+    ("damage model's thermal coefficient differs from the material's",
+     [('<Parameter name="Density"', '<Parameter name="Thermal Expansion Coefficient" type="double" value="1e-5"/>\n'
+       '      <Parameter name="Density"'),
+      ('<ParameterList name="Blocks">', '<ParameterList name="Damage Models"><ParameterList name="Brittle">'
+       '<Parameter name="Damage Model" type="string" value="Critical Stretch"/>'
+       '<Parameter name="Critical Stretch" type="double" value="0.01"/>'
+       '<Parameter name="Thermal Expansion Coefficient" type="double" value="2e-5"/></ParameterList></ParameterList>\n'
+       '  <ParameterList name="Blocks">'),
+      ('<Parameter name="Material" type="string" value="Steel"/>',
+       '<Parameter name="Material" type="string" value="Steel"/><Parameter name="Damage Model" type="string" value="Brittle"/>')],
+     ["Damage Models/Brittle", "Thermal Expansion Coefficient"]),
+    ("solve for pressure",
+     [('<Parameter name="Final Time" type="double" value="1.0"/>',
+       '<Parameter name="Final Time" type="double" value="1.0"/><Parameter name="Solve For Pressure" type="bool" value="true"/>')],
+     ["Solver", "Solve For Pressure"]),
+    ("solve for temperature with a mechanics solver",
+     [('<Parameter name="Final Time" type="double" value="1.0"/>',
+       '<Parameter name="Final Time" type="double" value="1.0"/><Parameter name="Solve For Temperature" type="bool" value="true"/>')],
+     ["Solver", "Solve For Temperature"]),
+    ("ImplicitDiffusion without conduction",
+     [('<ParameterList name="Adaptive Dynamic Relaxation">', '<ParameterList name="ImplicitDiffusion">'),
+      ('<Parameter name="Relative Tolerance" type="double" value="1.0e-7"/>', '')],
+     ["Solver/ImplicitDiffusion", "conducts heat"]),
+    ("mechanics solver over a Diffusion-only body",
+     [('<Parameter name="Material Model" type="string" value="Elastic"/>.*?</ParameterList>',
+       '<Parameter name="Material Model" type="string" value="Diffusion"/>'
+       '<Parameter name="Coefficient" type="double" value="1.0"/></ParameterList>')],
+     ["Solver", "force model"]),
+    ("Diffusion's improved quadrature",
+     [('<Parameter name="Material Model" type="string" value="Elastic"/>.*?</ParameterList>',
+       '<Parameter name="Material Model" type="string" value="Diffusion"/><Parameter name="Coefficient" type="double" '
+       'value="1.0"/><Parameter name="Use Improved Quadrature" type="bool" value="true"/></ParameterList>')],
+     ["Steel", "Use Improved Quadrature"]),
 ]
 
 

@@ -1,0 +1,39 @@
+#include "DiffusionMaterial.hpp"
+
+#include "HeatConduction.hpp"
+#include "core/InputError.hpp"
+
+namespace pf {
+
+DiffusionMaterial::DiffusionMaterial(const MaterialInput& in) : density_(in.get("Density", 0.0)) {}
+
+MaterialEntry DiffusionMaterial::entry() {
+  using P = ParameterSpec;
+  MaterialEntry e{"Diffusion",
+                  "Peridigm's nonlocal heat conduction without a force model (ImplicitDiffusion)",
+                  {P::real("Coefficient", "thermal conductivity k [W/(m K)] of the bond rule (docs/thermal.md)").need().positive(),
+                   P::flag("Use Improved Quadrature",
+                           "Peridigm's optional quadrature weights (built only with its USE_IMPROVED_QUADRATURE); "
+                           "Periforge has them not: true is an input error")
+                       .byDefault("false"),
+                   P::real("Density", "mass density [kg/m^3]; only for a transient solve (with Specific Heat Capacity)")
+                       .positive(),
+                   P::real("Specific Heat Capacity", "c [J/(kg K)]; only for a transient solve").positive()},
+                  [](const MaterialInput& in) { return std::unique_ptr<Material>(new DiffusionMaterial(in)); },
+                  {}};
+  e.createOperator = [](const MaterialInput& in) {
+    if (in.flag("Use Improved Quadrature"))
+      throw InputError(in.where() + ": 'Use Improved Quadrature' = true: Peridigm's improved-quadrature weights are "
+                       "not available in Periforge");
+    const double capacity = in.get("Density", 0.0) * in.get("Specific Heat Capacity", 0.0);
+    return std::unique_ptr<FieldOperator>(new HeatConduction(in.get("Coefficient"), capacity, Dimension::ThreeD, 0.0));
+  };
+  return e;
+}
+
+void DiffusionMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {}
+void DiffusionMaterial::pairStiffness(const FamilyView& fam, double* c) const {
+  for (int b = fam.offsets[fam.begin]; b < fam.offsets[fam.end]; ++b) c[b] = 0.0;
+}
+
+}  // namespace pf

@@ -1,0 +1,29 @@
+#pragma once
+// Bond-based peridynamic heat conduction (the flux divergence Peridigm's "Diffusion" material computes):
+//   h_i = sum_j c (T_j - T_i) / |xi_ij| V_j,   c = 6 k / (pi delta^4) in 3D,  6 k / (pi H delta^3) in 2D (thickness H),
+// the constant for which h -> k lap T as delta -> 0 for a smooth T at a point whose family is whole (a Taylor
+// expansion of T: sum over the ball of (xi . grad)^2 T / (2 |xi|) = pi delta^4 lap T / 6 in 3D, pi H delta^3 lap T / 6
+// in 2D). Neighbours count with their partial volume where the discretization has one. Gather form: each owned
+// node sums its own family (so a family cut by the surface conducts less: the surface effect, docs/thermal.md).
+#include "core/Dimension.hpp"
+#include "core/FieldOperator.hpp"
+
+namespace pf {
+
+class HeatConduction : public FieldOperator {
+ public:
+  // k: thermal conductivity (W/(m K)); capacity: rho c (J/(m^3 K)), 0 for steady solves only; thickness: 2D only.
+  HeatConduction(double k, double capacity, Dimension dim, double thickness);
+  std::string field() const override { return "Temperature"; }
+  void apply(const FamilyView& fam, const double* u, double* out) const override;
+  void diagonal(const FamilyView& fam, double* diag) const override;
+  double capacity() const override { return capacity_; }
+  // c of the bond rule above for a block of horizon delta.
+  double microconductivity(double delta) const;
+
+ private:
+  double k_, capacity_, thickness_;
+  Dimension dim_;
+};
+
+}  // namespace pf
