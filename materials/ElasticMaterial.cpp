@@ -19,9 +19,15 @@ std::vector<std::string> ElasticMaterial::fieldsRead() const {
 }
 
 MaterialEntry ElasticMaterial::entry() {
-  return {"Elastic", "linear ordinary state-based solid", withThermalExpansion(elasticSolidParameters()),
-          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticMaterial(in)); },
-          {"Dilatation", "Stored_Elastic_Energy"}};
+  MaterialEntry e{"Elastic", "linear ordinary state-based solid", withThermalExpansion(elasticSolidParameters()),
+                  [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticMaterial(in)); },
+                  {"Dilatation", "Stored_Elastic_Energy"}};
+  e.createOperator = [](const MaterialInput& in) {
+    double thickness = 0.0;
+    const Dimension dim = dimensionFrom(in, &thickness);
+    return conductionOf(in, dim, thickness);
+  };
+  return e;
 }
 
 std::vector<StateSpec> ElasticMaterial::stateSpecs() const {

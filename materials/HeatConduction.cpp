@@ -4,8 +4,16 @@
 
 namespace pf {
 
-HeatConduction::HeatConduction(double k, double capacity, Dimension dim, double thickness)
-    : k_(k), capacity_(capacity), thickness_(thickness), dim_(dim) {}
+HeatConduction::HeatConduction(double k, double capacity, Dimension dim, double thickness, Normalisation n)
+    : k_(k), capacity_(capacity), thickness_(thickness), dim_(dim), norm_(n) {}
+
+double HeatConduction::nodeConstant(const FamilyView& fam, int i) const {
+  if (norm_ == Normalisation::Analytic) return microconductivity(fam.horizon);
+  double s = 0.0;
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b)
+    s += fam.refLength[b] * fam.volume[fam.neighbors[b]] * (fam.fraction ? fam.fraction[b] : 1.0);
+  return s > 0.0 ? (isPlanar(dim_) ? 4.0 : 6.0) * k_ / s : 0.0;
+}
 
 double HeatConduction::microconductivity(double delta) const {
   const double d2 = delta * delta;
@@ -13,8 +21,8 @@ double HeatConduction::microconductivity(double delta) const {
 }
 
 void HeatConduction::apply(const FamilyView& fam, const double* u, double* out) const {
-  const double c = microconductivity(fam.horizon);
   for (int i = fam.begin; i < fam.end; ++i) {
+    const double c = nodeConstant(fam, i);
     double sum = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       if (fam.brokenN && fam.brokenN[b] != 0.0) continue;  // a broken bond conducts no heat
@@ -27,8 +35,8 @@ void HeatConduction::apply(const FamilyView& fam, const double* u, double* out) 
 }
 
 void HeatConduction::diagonal(const FamilyView& fam, double* diag) const {
-  const double c = microconductivity(fam.horizon);
   for (int i = fam.begin; i < fam.end; ++i) {
+    const double c = nodeConstant(fam, i);
     double sum = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       if (fam.brokenN && fam.brokenN[b] != 0.0) continue;

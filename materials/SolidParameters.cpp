@@ -4,6 +4,7 @@
 #include "core/Log.hpp"
 #include "core/MaterialEntry.hpp"
 #include "ElasticModuli.hpp"
+#include "HeatConduction.hpp"
 
 namespace pf {
 
@@ -58,7 +59,20 @@ std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> param
                                        "linear thermal expansion coefficient alpha [1/K]; the material then reads the "
                                        "Temperature field (docs/input.md, \"Temperature\"), relative to each point's "
                                        "start temperature"));
+  params.push_back(ParameterSpec::real("Thermal Conductivity",
+                                       "k [W/(m K)]: the block conducts heat (docs/thermal.md; bond rule normalised on "
+                                       "each point's family)").positive());
+  params.push_back(ParameterSpec::real("Specific Heat Capacity",
+                                       "c [J/(kg K)]: with Density the heat capacity of a transient thermal solve")
+                       .positive());
   return params;
+}
+
+std::unique_ptr<FieldOperator> conductionOf(const MaterialInput& in, Dimension dim, double thickness) {
+  if (!in.has("Thermal Conductivity")) return nullptr;
+  const double capacity = in.get("Density", 0.0) * in.get("Specific Heat Capacity", 0.0);
+  return std::unique_ptr<FieldOperator>(new HeatConduction(in.get("Thermal Conductivity"), capacity, dim, thickness,
+                                                           HeatConduction::Normalisation::Family));
 }
 
 double thermalExpansionOf(const MaterialInput& in, Dimension dim, const ElasticModuli& moduli) {

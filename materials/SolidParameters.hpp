@@ -1,6 +1,7 @@
 #pragma once
 // Parameters every OSB solid accepts: density, elastic moduli (any two), planar options, and the Peridigm
 // options: "Apply Shear Correction Factor" as each Peridigm model treats it, and ones Periforge ignores.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,8 +26,12 @@ bool shearCorrectionOf(const MaterialInput& in, Dimension dim);
 // IgnoredAsPeridigm: warns when the deck asks for it; always false.
 bool ignoredShearCorrection(const MaterialInput& in, const std::string& model);
 
-// The parameters plus Peridigm's "Thermal Expansion Coefficient" (for a model that honours it).
+// The parameters plus Peridigm's "Thermal Expansion Coefficient" (for a model that honours it) and the conduction
+// parameters "Thermal Conductivity", "Specific Heat Capacity" (materials/HeatConduction.hpp).
 std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params);
+class FieldOperator;
+// The heat conduction of a solid with "Thermal Conductivity" (family normalisation), or null without it.
+std::unique_ptr<FieldOperator> conductionOf(const MaterialInput& in, Dimension dim, double thickness);
 struct ElasticModuli;
 // The coefficient a of the thermal extension a dT |xi| (materials/OsbThermalKernels.hpp) or of the thermal strain
 // a dT (correspondence): alpha in 3D and plane stress, (1 + nu) alpha in plane strain; 0 when not given.

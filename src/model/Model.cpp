@@ -197,6 +197,13 @@ void Model::fieldDiagonal(const std::string& field, double* diag) const {
     if (b.fieldOperator && b.fieldOperator->field() == field) b.fieldOperator->diagonal(blockView(b), diag);
 }
 
+void Model::fieldCapacity(const std::string& field, double* capacity) const {
+  std::fill(capacity, capacity + numOwned(), 0.0);
+  for (const BlockModel& b : blocks_)
+    if (b.fieldOperator && b.fieldOperator->field() == field)
+      for (int i = b.begin; i < b.end; ++i) capacity[i] = b.fieldOperator->capacity();
+}
+
 bool Model::hasOperator(const std::string& field) const {
   double mine = 0.0;
   for (const BlockModel& b : blocks_)

@@ -155,6 +155,8 @@ class Model {
   // any rank has one (collective).
   void fieldRate(const std::string& field, const double* owned, double* rate);
   void fieldDiagonal(const std::string& field, double* diag) const;
+  // Per owned node: the capacity per volume (rho c) of its block's operator on `field`, 0 where it has none.
+  void fieldCapacity(const std::string& field, double* capacity) const;
   bool hasOperator(const std::string& field) const;
   // Whether any block on any rank has a force model (Material::hasForceModel); collective.
   bool hasForceModel() const;

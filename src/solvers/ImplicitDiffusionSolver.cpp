@@ -1,5 +1,6 @@
 #include "ImplicitDiffusionSolver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,6 +37,10 @@ SolverEntry ImplicitDiffusionSolver::entry() {
       S::integer("Belos Maximum Iterations", "accepted (Peridigm's)").atLeast(1),
       S::real("Belos Relative Tolerance", "accepted (Peridigm's); Periforge solves each iteration to 1e-12").positive(),
       S::flag("Belos Print Status", "accepted (Peridigm's)").byDefault("false"),
+      S::text("Time Integration", "Periforge's: `Steady` (Peridigm's: L(T) = 0 at each load time) or `Backward "
+                                  "Euler` (transient: rho c (T - T_n) / dt = L(T), dt the load step; needs Density "
+                                  "and Specific Heat Capacity in every conducting block)")
+          .oneOf({"Steady", "Backward Euler"}).byDefault("Steady"),
       S::flag("Verbose", "print the residual of every iteration").byDefault("false")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     ImplicitDiffusionOptions o;
@@ -43,6 +48,7 @@ SolverEntry ImplicitDiffusionSolver::entry() {
     o.absoluteTolerance = p.get("Absolute Tolerance", 0.0);
     o.maxIterations = static_cast<int>(p.get("Maximum Solver Iterations"));
     o.verbose = p.flag("Verbose");
+    o.transient = p.text("Time Integration") == "Backward Euler";
     o.where = p.where();
     return std::unique_ptr<Solver>(new ImplicitDiffusionSolver(o));
   };
@@ -52,7 +58,75 @@ SolverEntry ImplicitDiffusionSolver::entry() {
 void ImplicitDiffusionSolver::check(const Model& model) const {
   if (!model.hasOperator(kField))
     throw InputError(opt_.where + ": no block conducts heat: give a block a material with conduction (Material Model "
-                                  "'Diffusion')");
+                                  "'Diffusion', or a solid with 'Thermal Conductivity')");
+  if (!opt_.transient) return;
+  std::vector<double> c(static_cast<std::size_t>(model.numOwned()));
+  model.fieldCapacity(kField, c.data());
+  double none = 0.0;
+  for (double x : c) none = x > 0.0 ? none : 1.0;
+  if (model.max(none) > 0.0)
+    throw InputError(opt_.where + ": 'Time Integration' = 'Backward Euler' needs 'Density' and 'Specific Heat Capacity' "
+                                  "in every block's material (a point without heat capacity)");
+}
+
+// One load step from the committed field to time t (the previous load time tPrev): T ends converged, rate = L(T).
+// Returns the iterations; sets residual and tol. Throws SolverFailure when the tolerance is not met.
+int ImplicitDiffusionSolver::solveStep(Model& model, double tPrev, double t, std::vector<double>& T,
+                                      std::vector<double>& rate, double& residual, double& tol) const {
+  const int n = model.numOwned();
+  StateStore& state = model.state();
+  const std::vector<char>& mask = model.fields().prescribedMask(kField);
+  const std::vector<double>& V = model.volume();
+  auto sum = [&](double x) { return model.sum(x); };
+  // Backward Euler: C (T - T_n) / dt = L(T); steady: L(T) = 0. R = L(T) - C (T - T_n) / dt at the free points.
+  const double inertia = opt_.transient ? 1.0 / (t - tPrev) : 0.0;
+  std::vector<double> Tn(state.committed(kField), state.committed(kField) + n), C(n), diag(n), inv(n), r(n), b(n), d(n);
+  model.fieldCapacity(kField, C.data());
+  auto residualOf = [&] {
+    model.fieldRate(kField, T.data(), rate.data());
+    double s = 0.0;
+    for (int i = 0; i < n; ++i) {
+      r[i] = mask[i] ? 0.0 : rate[i] - inertia * C[i] * (T[i] - Tn[i]);
+      s += r[i] * r[i];
+    }
+    return std::sqrt(sum(s));
+  };
+  std::copy(Tn.begin(), Tn.end(), state.trial(kField));
+  model.updateFields();  // prescribed temperatures of t on the committed field
+  std::copy(state.trial(kField), state.trial(kField) + n, T.begin());
+  residual = residualOf();
+  double reaction = 0.0;  // Peridigm's steady rule: |L(T) V| over the held points at the step's start
+  for (int i = 0; i < n; ++i) reaction += mask[i] ? rate[i] * V[i] * rate[i] * V[i] : 0.0;
+  const double scale = opt_.transient ? residual : std::sqrt(sum(reaction));
+  tol = opt_.absoluteTolerance > 0.0 ? opt_.absoluteTolerance : opt_.relativeTolerance * scale;
+  model.fieldDiagonal(kField, diag.data());
+  for (int i = 0; i < n; ++i) {
+    const double jii = diag[i] + inertia * C[i];  // |dR_i / dT_i|
+    inv[i] = mask[i] || !(jii > 0.0) ? 1.0 : -1.0 / jii;
+  }
+  // dR/dT on a correction that is 0 at the held points: L(x) - C x / dt at the free ones, x itself at those.
+  auto apply = [&](const double* x, double* y) {
+    model.fieldRate(kField, x, y);
+    for (int i = 0; i < n; ++i) y[i] = mask[i] ? x[i] : y[i] - inertia * C[i] * x[i];
+  };
+  int iterations = 0;
+  while (residual > tol && iterations < opt_.maxIterations) {
+    for (int i = 0; i < n; ++i) b[i] = -r[i];
+    // An unconverged Krylov solve still improves T; the Newton loop's residual test decides.
+    bicgstab(apply, inv, b, d, kKrylovTolerance, 10 * model.layout().numGlobal() + 100, sum);
+    for (int i = 0; i < n; ++i) T[i] += mask[i] ? 0.0 : d[i];
+    residual = residualOf();
+    ++iterations;
+    if (model.layout().rank() == 0 && opt_.verbose)
+      std::printf("  iteration %d: residual %.6e (tolerance %.3e)\n", iterations, residual, tol);
+  }
+  if (!std::isfinite(residual) || residual > tol) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, ": load step to t = %g: residual %.6e above the tolerance %.6e after %d iterations", t,
+                  residual, tol, iterations);
+    throw SolverFailure(opt_.where + msg);
+  }
+  return iterations;
 }
 
 void ImplicitDiffusionSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
@@ -61,15 +135,7 @@ void ImplicitDiffusionSolver::run(Model& model, std::vector<double>& u, std::vec
   const int n = model.numOwned();
   model.fields().setSolved(kField);
   StateStore& state = model.state();
-  const std::vector<char>& mask = model.fields().prescribedMask(kField);
-  const std::vector<double>& V = model.volume();
-  std::vector<double> T(n), rate(n, 0.0), diag(n), inv(n), b(n), d(n), f(u.size(), 0.0);
-  auto sum = [&](double x) { return model.sum(x); };
-  auto freeNorm = [&](const std::vector<double>& r) {
-    double s = 0.0;
-    for (int i = 0; i < n; ++i) s += mask[i] ? 0.0 : r[i] * r[i];
-    return std::sqrt(sum(s));
-  };
+  std::vector<double> T(n), rate(n, 0.0), f(u.size(), 0.0);
   auto report = [&](int step, double t, int iterations, double residual, double tol, double wall) {
     StepReport r{step, t, iterations, residual, tol, wall, nullptr};
     observer.onStep(r, u, v, f);
@@ -87,40 +153,8 @@ void ImplicitDiffusionSolver::run(Model& model, std::vector<double>& u, std::vec
     const auto clock = std::chrono::steady_clock::now();
     const double t = times[k];
     model.applyPrescribed(t, u.data());
-    std::copy(state.committed(kField), state.committed(kField) + n, state.trial(kField));
-    model.updateFields();  // prescribed temperatures of t on the committed field
-    std::copy(state.trial(kField), state.trial(kField) + n, T.begin());
-    model.fieldRate(kField, T.data(), rate.data());
-    double reaction = 0.0;
-    for (int i = 0; i < n; ++i) reaction += mask[i] ? rate[i] * V[i] * rate[i] * V[i] : 0.0;
-    const double tol = opt_.absoluteTolerance > 0.0 ? opt_.absoluteTolerance : opt_.relativeTolerance * std::sqrt(sum(reaction));
-    model.fieldDiagonal(kField, diag.data());
-    for (int i = 0; i < n; ++i) inv[i] = mask[i] || !(diag[i] > 0.0) ? 1.0 : -1.0 / diag[i];
-    double residual = freeNorm(rate);
-    int iterations = 0;
-    // The operator on a correction d that is 0 at the prescribed nodes: L(d) at the free ones, d itself at those.
-    auto apply = [&](const double* x, double* y) {
-      model.fieldRate(kField, x, y);
-      for (int i = 0; i < n; ++i)
-        if (mask[i]) y[i] = x[i];
-    };
-    while (residual > tol && iterations < opt_.maxIterations) {
-      for (int i = 0; i < n; ++i) b[i] = mask[i] ? 0.0 : -rate[i];
-      // An unconverged Krylov solve still improves T; the Newton loop's residual test decides.
-      bicgstab(apply, inv, b, d, kKrylovTolerance, 10 * model.layout().numGlobal() + 100, sum);
-      for (int i = 0; i < n; ++i) T[i] += mask[i] ? 0.0 : d[i];
-      model.fieldRate(kField, T.data(), rate.data());
-      residual = freeNorm(rate);
-      ++iterations;
-      if (model.layout().rank() == 0 && opt_.verbose)
-        std::printf("  iteration %d: residual %.6e (tolerance %.3e)\n", iterations, residual, tol);
-    }
-    if (!std::isfinite(residual) || residual > tol) {
-      char msg[200];
-      std::snprintf(msg, sizeof msg, ": load step %zu (t = %g): residual %.6e above the tolerance %.6e after %d iterations",
-                    k, t, residual, tol, iterations);
-      throw SolverFailure(opt_.where + msg);
-    }
+    double residual = 0.0, tol = 0.0;
+    const int iterations = solveStep(model, times[k - 1], t, T, rate, residual, tol);
     std::copy(T.begin(), T.end(), state.trial(kField));
     model.updateFields();  // the change and the ghosts of the solved field
     std::copy(rate.begin(), rate.end(), state.trial("Flux_Divergence"));

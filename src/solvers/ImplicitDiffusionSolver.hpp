@@ -5,7 +5,8 @@
 // iterations, each a Jacobi-preconditioned BiCGStab solve (ScalarKrylov.hpp; L is linear, so one iteration
 // converges up to the Krylov tolerance), until |L(T)| over the free nodes is at most Relative Tolerance times the
 // norm of L(T) V over the prescribed nodes at the step's start (Peridigm's reaction rule) or, if given, Absolute
-// Tolerance. The displacement stays as it is.
+// Tolerance. `Time Integration` = `Backward Euler` (Periforge's) makes it transient: rho c (T - T_n) / dt = L(T) over
+// each load step, converged to Relative Tolerance of the step's initial residual. The displacement stays as it is.
 #include <string>
 
 #include "Solver.hpp"
@@ -18,6 +19,7 @@ struct ImplicitDiffusionOptions {
   double absoluteTolerance = 0.0;  // > 0: used instead of the relative rule (Peridigm's)
   int maxIterations = 10;          // Newton iterations per load step
   bool verbose = false;
+  bool transient = false;          // Time Integration = Backward Euler
   std::string where;
 };
 
@@ -32,6 +34,8 @@ class ImplicitDiffusionSolver : public Solver {
 
  private:
   ImplicitDiffusionOptions opt_;
+  int solveStep(Model& model, double tPrev, double t, std::vector<double>& T, std::vector<double>& rate,
+                double& residual, double& tol) const;
 };
 
 }  // namespace pf
