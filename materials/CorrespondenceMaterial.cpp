@@ -63,7 +63,24 @@ Dimension correspondenceDimension(const MaterialInput& in, const std::string& mo
 
 CorrespondenceMaterial::CorrespondenceMaterial(const MaterialInput& in, const std::string& model)
     : moduli_(elasticModuliFrom(in)), dim_(correspondenceDimension(in, model, &thickness_)),
-      density_(in.get("Density")), hourglass_(in.get("Hourglass Coefficient")) {}
+      density_(in.get("Density")), hourglass_(in.get("Hourglass Coefficient")),
+      alpha_(in.get("Thermal Expansion Coefficient", 0.0)) {}
+
+std::vector<std::string> CorrespondenceMaterial::fieldsRead() const {
+  if (alpha_ == 0.0) return {};
+  return {"Temperature_Change"};
+}
+
+void CorrespondenceMaterial::subtractThermalIncrement(const FamilyView& fam, const StateStore& state,
+                                                      std::vector<Mat3>& de) const {
+  const double* dT = fam.fields->find("Temperature_Change");  // trial, per overlap node (owned first)
+  const double* dTn = state.committed("Temperature_Change");   // per owned node
+  for (std::size_t k = 0; k < de.size(); ++k) {
+    const int i = fam.begin + static_cast<int>(k);
+    const double d = alpha_ * (dT[i] - dTn[i]) / (1.0 + 0.5 * alpha_ * (dT[i] + dTn[i]));
+    de[k][0] -= d, de[k][4] -= d, de[k][8] -= d;
+  }
+}
 
 std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters() {
   using P = ParameterSpec;
@@ -77,6 +94,9 @@ std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters() {
       P::real("Thickness", "out-of-plane thickness of a 2D model [m]").positive(),
       P::real("Hourglass Coefficient",
               "weight of the zero-energy-mode force, times the bond-based micromodulus (Peridigm)").need().nonNegative(),
+      P::real("Thermal Expansion Coefficient",
+              "linear thermal expansion coefficient alpha [1/K]: the thermal stretch (1 + alpha dT) I leaves the "
+              "rate of deformation before the stress update (docs/thermal.md); reads the Temperature field"),
   };
 }
 
@@ -167,7 +187,9 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
     if (dissipatedWanted_) Jn[k] = det(Fs.committedAt(i));
     Fs.set(i, sg.F), Rs.set(i, pu.R), Vs.set(i, pu.V);
   }
-  // Phase 2: the model's stress update; phase 3: stress to force state, plus the hourglass force.
+  // Phase 2: the model's stress update on the mechanical increment; phase 3: stress to force state, plus the
+  // hourglass force.
+  if (alpha_ != 0.0) subtractThermalIncrement(fam, state, de);
   updateStress(fam, state, tauN, de, tau);
   const double c = hourglassConstant(fam.horizon);
   // Energies per node (J; docs/materials.md, "Energy"). Foster et al. (2010)'s Eqs. 49-52 are rate forms of

@@ -34,6 +34,9 @@ class CorrespondenceMaterial : public Material {
   void pairStiffness(const FamilyView& fam, double* c) const override;
   void enableOutput(const std::string& name) const override;
   bool wantsCommittedPositions() const override { return storedWanted_; }  // the hourglass work
+  // With a Thermal Expansion Coefficient alpha: Temperature_Change (the thermal strain increment leaves d before the
+  // stress update, thermalIncrement).
+  std::vector<std::string> fieldsRead() const override;
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 
@@ -75,6 +78,12 @@ class CorrespondenceMaterial : public Material {
   Dimension dim_;
   double density_;
   double hourglass_;  // Hourglass Coefficient
+  double alpha_ = 0.0;  // Thermal Expansion Coefficient; 0: none
+  // de -= the increment of the thermal stretch F_th = (1 + alpha dT) I, in the midpoint form the kinematics use for
+  // d (flanaganTaylor: d = (F - F_n) F_mid^-1), so that a free body heated uniformly has no stress: for each owned
+  // node, alpha (dT - dT_n) / (1 + alpha (dT + dT_n) / 2) off every diagonal component (zz too: in plane strain the
+  // out-of-plane strain is held, so its thermal part is a mechanical strain).
+  void subtractThermalIncrement(const FamilyView& fam, const StateStore& state, std::vector<Mat3>& de) const;
   // Set by enableOutput before the run (blocks share the material): the energy fields cost a little per node
   // and bond, so only runs that ask for them pay; they never change a force.
   mutable bool storedWanted_ = false, dissipatedWanted_ = false;

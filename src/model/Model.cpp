@@ -154,17 +154,27 @@ void Model::imposeFields() {
   if (time_ != fieldLoadTime_) updateFieldLoad();
 }
 
-// The reference configuration's force of the blocks that read a field, in scratch arrays: the trial state it
-// writes (a dilatation, bond flags) is rewritten by the evaluation that follows.
+// The reference configuration's force of the blocks that read a field, evaluated as internalForce does (both
+// phases of a two-phase model) into fOverlap_, which internalForce has just zeroed and zeroes again here; the trial
+// state it writes (a dilatation, bond flags, a correspondence stress) is rewritten by the evaluation that follows.
 void Model::updateFieldLoad() {
   fieldLoadTime_ = time_;
   bool reads = false;
   for (const BlockModel& b : blocks_) reads = reads || !b.material->fieldsRead().empty();
   if (layout_->max(reads ? 1.0 : 0.0) == 0.0) return;
-  std::vector<double> f(fOverlap_.size(), 0.0), owned(static_cast<std::size_t>(numDofs()), 0.0);
+  std::vector<double> owned(static_cast<std::size_t>(numDofs()), 0.0);
+  auto readsField = [](const BlockModel& b) { return !b.material->fieldsRead().empty(); };
   for (const BlockModel& b : blocks_)
-    if (!b.material->fieldsRead().empty()) b.material->computeForce(view(b), x_.data(), state_, f.data());
-  layout_->exportAdd(f.data(), owned.data(), 3);
+    if (readsField(b)) b.material->computeForce(view(b), x_.data(), state_, fOverlap_.data());
+  if (exchangeWidth_ > 0) {
+    std::copy(exchange_.begin(), exchange_.begin() + static_cast<long>(exchangeOwned_.size()), exchangeOwned_.begin());
+    layout_->importToOverlap(exchangeOwned_.data(), exchange_.data(), exchangeWidth_);
+    for (const BlockModel& b : blocks_)
+      if (readsField(b) && b.material->exchangeWidth(blockView(b)) > 0)
+        b.material->completeForce(view(b), x_.data(), state_, fOverlap_.data());
+  }
+  layout_->exportAdd(fOverlap_.data(), owned.data(), 3);
+  std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
   double s = 0.0;
   for (std::size_t k = 0; k < owned.size(); ++k) s += owned[k] * owned[k] * volume_[k / 3] * volume_[k / 3];
   fieldLoad_ = std::sqrt(sum(s));

@@ -1,9 +1,10 @@
-# The Temperature field (issue 33): thermal expansion of the Elastic solid against the closed forms of linear
-# thermoelasticity (free and clamped blocks, 3D, plane stress, plane strain) and steady conduction (ImplicitDiffusion)
+# The Temperature field (issue 33): thermal expansion of the Elastic solid (3D, plane stress, plane strain) and of
+# Elastic Correspondence (3D, plane strain) against the closed forms of linear thermoelasticity (free and clamped
+# blocks) and steady conduction (ImplicitDiffusion)
 # against Fourier's linear profile, np 1 and 2.
 foreach(np 1 2)
   foreach(kind free clamped)
-    foreach(dim 3d plane_stress plane_strain)
+    foreach(dim 3d plane_stress plane_strain corr_3d corr_plane_strain)
       set(name thermal_${kind}_${dim}_np${np})
       periforge_run(${name} ${REG}/thermal/thermal_${kind}_${dim}.xml ${np})
       periforge_check(${name}_check ${name}
