@@ -155,7 +155,7 @@ void Model::imposeFields() {
 }
 
 // The reference configuration's force of the blocks that read a field, evaluated as internalForce does (both
-// phases of a two-phase model) into fOverlap_, which internalForce has just zeroed and zeroes again here; the trial
+// phases of a two-phase model) into fOverlap_, zeroed before and after; the trial
 // state it writes (a dilatation, bond flags, a correspondence stress) is rewritten by the evaluation that follows.
 void Model::updateFieldLoad() {
   fieldLoadTime_ = time_;
@@ -164,6 +164,7 @@ void Model::updateFieldLoad() {
   if (layout_->max(reads ? 1.0 : 0.0) == 0.0) return;
   std::vector<double> owned(static_cast<std::size_t>(numDofs()), 0.0);
   auto readsField = [](const BlockModel& b) { return !b.material->fieldsRead().empty(); };
+  std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);  // updateFields() may come after another solver's evaluations
   for (const BlockModel& b : blocks_)
     if (readsField(b)) b.material->computeForce(view(b), x_.data(), state_, fOverlap_.data());
   if (exchangeWidth_ > 0) {
