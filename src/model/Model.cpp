@@ -151,7 +151,7 @@ void Model::imposeFields() {
   if (fields_.empty()) return;
   if (!fieldsStarted_) fields_.start(startTime_, x_, state_), fieldsStarted_ = true;
   fields_.impose(time_, x_, state_, *layout_);
-  if (time_ != fieldLoadTime_) updateFieldLoad();
+  if (fieldLoadWanted_ && time_ != fieldLoadTime_) updateFieldLoad();
 }
 
 // The reference configuration's force of the blocks that read a field, evaluated as internalForce does (both

@@ -149,7 +149,10 @@ class Model {
   // force at u = 0 of the blocks whose materials read a field (the force a uniform heating would make in the
   // reference configuration, i.e. what a clamped body's supports would carry). 0 without such blocks, so the
   // quasi-static solvers' load scale (LoadStepping.hpp) is unchanged for mechanics-only decks. Collective value.
+  // Computed (an extra evaluation at each new time) only after requestFieldLoad(): the load-stepping solvers ask,
+  // an explicit run does not pay for it.
   double fieldLoad() const { return fieldLoad_; }
+  void requestFieldLoad() { fieldLoadWanted_ = true; }
   // The blocks' field operators (core/FieldOperator.hpp) on `field`: rate (per owned node) = their sum at the owned
   // values `owned` (ghosted here; collective); diagonal: the sum of |dL_i/du_i|. hasOperator: whether any block on
   // any rank has one (collective).
@@ -183,6 +186,7 @@ class Model {
   FieldSet fields_;
   std::vector<double> fieldOverlap_;  // fieldRate's ghosted values
   double fieldLoad_ = 0.0, fieldLoadTime_ = NAN;
+  bool fieldLoadWanted_ = false;
   void updateFieldLoad();
   bool fieldsStarted_ = false;  // their start values set (FieldSet::start), or restored by a restart
   void imposeFields();          // FieldSet::impose at time_, starting the fields first if needed

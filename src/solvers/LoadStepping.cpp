@@ -53,6 +53,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
                   const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double, double)>& solveStep,
                   const SolverResume* resume) {
   using Clock = std::chrono::steady_clock;
+  model.requestFieldLoad();  // the load scale's thermal term (residualNorms)
   const int n = model.numDofs();
   const bool root = model.layout().rank() == 0;
   std::vector<double> f(n), duPrev(n, 0.0);
