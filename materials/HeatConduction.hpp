@@ -30,8 +30,8 @@ class HeatConduction : public FieldOperator {
   double k_, capacity_, thickness_;
   Dimension dim_;
   Normalisation norm_;
-  // c / (the bond sum of |xi| V it scales) for node i: analytic (family sum unused) or its family's.
-  double nodeConstant(const FamilyView& fam, int i) const;
+  // c for a node whose family sum of |xi| V_j is familySum: analytic (the sum unused) or family-normalised.
+  double nodeConstant(const FamilyView& fam, double familySum) const;
 };
 
 }  // namespace pf

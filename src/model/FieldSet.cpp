@@ -8,9 +8,16 @@
 namespace pf {
 
 namespace {
-std::string changeOf(const std::string& name) { return name + "_Change"; }
+const std::string kChange = "_Change";
+std::string changeOf(const std::string& name) { return name + kChange; }
 std::string startOf(const std::string& name) { return name + "_Start"; }
 }  // namespace
+
+std::string FieldSet::fieldOf(const std::string& value) {
+  const std::size_t n = kChange.size();
+  const bool change = value.size() > n && value.compare(value.size() - n, n, kChange) == 0;
+  return change ? value.substr(0, value.size() - n) : value;
+}
 
 FieldSet::Field* FieldSet::find(const std::string& name) {
   for (Field& f : fields_)

@@ -21,6 +21,8 @@ class FieldSet {
  public:
   bool empty() const { return fields_.empty(); }
   bool has(const std::string& name) const { return find(name) != nullptr; }
+  // The field a value materials read belongs to: "Temperature" for "Temperature" and "Temperature_Change".
+  static std::string fieldOf(const std::string& value);
   // Declares the field (once; again is a no-op) and its state in `state` (numOwned nodes).
   void add(const std::string& name, StateStore& state, int numOwned, std::size_t numBonds);
   // The field's rate from its operators (core/FieldOperator.hpp) as the node output `rate` (Flux_Divergence),

@@ -119,7 +119,7 @@ void Model::internalForce(const double* u, double* f) {
   collectively(layout_->comm(), [&] {
     for (const BlockModel& b : blocks_) b.material->computeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
   });
-  if (exchangeWidth_ > 0) exchangeAndComplete();
+  if (exchangeWidth_ > 0) exchangeAndComplete(yOverlap_.data(), false);
   layout_->exportAdd(fOverlap_.data(), f, 3);
   if (wantsPositions()) yEvaluated_ = yOverlap_;
 }
@@ -127,12 +127,15 @@ void Model::internalForce(const double* u, double* f) {
 // Phase 2 of a two-phase evaluation (Material::exchangeWidth): the owned rows the models wrote go to the
 // ghosts, then each model adds the force of its owned nodes. completeForce only sums (no constitutive
 // update), so nothing here fails on one rank only.
-void Model::exchangeAndComplete() {
+void Model::exchangeAndComplete(const double* y, bool onlyFieldReaders) {
   std::copy(exchange_.begin(), exchange_.begin() + static_cast<long>(exchangeOwned_.size()), exchangeOwned_.begin());
   layout_->importToOverlap(exchangeOwned_.data(), exchange_.data(), exchangeWidth_);
   for (const BlockModel& b : blocks_)
-    if (b.material->exchangeWidth(blockView(b)) > 0) b.material->completeForce(view(b), yOverlap_.data(), state_, fOverlap_.data());
+    if (b.material->exchangeWidth(blockView(b)) > 0 && (!onlyFieldReaders || readsField(b)))
+      b.material->completeForce(view(b), y, state_, fOverlap_.data());
 }
+
+bool Model::readsField(const BlockModel& b) { return !b.material->fieldsRead().empty(); }
 
 bool Model::wantsPositions() const {
   for (const BlockModel& b : blocks_)
@@ -160,20 +163,13 @@ void Model::imposeFields() {
 void Model::updateFieldLoad() {
   fieldLoadTime_ = time_;
   bool reads = false;
-  for (const BlockModel& b : blocks_) reads = reads || !b.material->fieldsRead().empty();
+  for (const BlockModel& b : blocks_) reads = reads || readsField(b);
   if (layout_->max(reads ? 1.0 : 0.0) == 0.0) return;
   std::vector<double> owned(static_cast<std::size_t>(numDofs()), 0.0);
-  auto readsField = [](const BlockModel& b) { return !b.material->fieldsRead().empty(); };
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);  // updateFields() may come after another solver's evaluations
   for (const BlockModel& b : blocks_)
     if (readsField(b)) b.material->computeForce(view(b), x_.data(), state_, fOverlap_.data());
-  if (exchangeWidth_ > 0) {
-    std::copy(exchange_.begin(), exchange_.begin() + static_cast<long>(exchangeOwned_.size()), exchangeOwned_.begin());
-    layout_->importToOverlap(exchangeOwned_.data(), exchange_.data(), exchangeWidth_);
-    for (const BlockModel& b : blocks_)
-      if (readsField(b) && b.material->exchangeWidth(blockView(b)) > 0)
-        b.material->completeForce(view(b), x_.data(), state_, fOverlap_.data());
-  }
+  if (exchangeWidth_ > 0) exchangeAndComplete(x_.data(), true);
   layout_->exportAdd(fOverlap_.data(), owned.data(), 3);
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
   double s = 0.0;
@@ -185,7 +181,7 @@ void Model::requireFieldsRead(const std::string& inputFile) const {
   collectively(layout_->comm(), [&] {
     for (const BlockModel& b : blocks_)
       for (const std::string& f : b.material->fieldsRead()) {
-        const std::string base = f.size() > 7 && f.compare(f.size() - 7, 7, "_Change") == 0 ? f.substr(0, f.size() - 7) : f;
+        const std::string base = FieldSet::fieldOf(f);
         if (!fields_.has(base))
           throw InputError(inputFile + ": Materials/" + b.materialName + ": its material reads the field '" + base +
                            "', which this deck does not set: give it a 'Prescribed " + base + "' or 'Initial " + base +

@@ -192,7 +192,9 @@ class Model {
   void imposeFields();          // FieldSet::impose at time_, starting the fields first if needed
   int exchangeWidth_ = 0;                         // the widest Material::exchangeWidth of the blocks
   std::vector<double> exchange_, exchangeOwned_;  // per overlap node / owned node, exchangeWidth_ each
-  void exchangeAndComplete();                     // the second phase of internalForce
+  // The second phase of internalForce at positions y (every two-phase block, or only those reading a field).
+  void exchangeAndComplete(const double* y, bool onlyFieldReaders);
+  static bool readsField(const BlockModel& b);    // its material reads a field (Material::fieldsRead)
   std::vector<double> yEvaluated_, yCommitted_;  // positions of the last internalForce and of the last commit
   bool wantsPositions() const;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_, followerLoads_;
