@@ -1,5 +1,6 @@
 #include "CorrespondenceKinematics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -90,6 +91,36 @@ ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y,
                    std::to_string(s.bonds) + " bonds; det K / (tr K / d)^d = " + std::to_string(s.quality) +
                    "): its family needs " + (planar ? "two non-parallel bonds" : "three non-coplanar bonds") +
                    "; is the horizon too small for the grid?");
+}
+
+void requirePositiveJacobian(const FamilyView& fam, int i, const double* y, const Mat3& F) {
+  const double J = det(F);
+  if (J > 0.0) return;
+  // The neighbours' state tells a squeezed or inverted family (bonds turned around: the deformed bond points
+  // against the reference one) from a blown-up one (a stretch far beyond any material's).
+  int bonds = 0, turned = 0;
+  double stretchMin = HUGE_VAL, stretchMax = -HUGE_VAL;
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    const int j = fam.neighbors[b];
+    if (bondWeight(fam, b) == 0.0) continue;
+    double dot = 0.0, l0 = 0.0, l = 0.0;
+    for (int a = 0; a < 3; ++a) {
+      const double xi = fam.x[3 * j + a] - fam.x[3 * i + a], Y = y[3 * j + a] - y[3 * i + a];
+      dot += xi * Y, l0 += xi * xi, l += Y * Y;
+    }
+    ++bonds, turned += dot < 0.0;
+    const double stretch = std::sqrt(l / l0) - 1.0;
+    stretchMin = std::min(stretchMin, stretch), stretchMax = std::max(stretchMax, stretch);
+  }
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "correspondence model: det F = %.3g <= 0 at %s, displaced by (%.3g, %.3g, %.3g): of its %d bonds %d "
+                "point against their reference direction, bond stretches %.3g .. %.3g (a family turned inside out: "
+                "a body squeezed through itself or a wall, a wall normal pointing into the body, a time step or "
+                "load step too large, or too little hourglass stiffness)",
+                J, pointName(fam, i).c_str(), y[3 * i] - fam.x[3 * i], y[3 * i + 1] - fam.x[3 * i + 1],
+                y[3 * i + 2] - fam.x[3 * i + 2], bonds, turned, stretchMin, stretchMax);
+  throw ConstitutiveFailure(buf);
 }
 
 PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {

@@ -29,6 +29,10 @@ struct PolarUpdate {
   Mat3 R, V;   // at the end of the step
   Mat3 dUnrot; // d dt (Foster Eq. 18 times dt)
 };
+// Throws ConstitutiveFailure when det F <= 0 at owned node i, naming the point, its displacement and its
+// bonds' state (how many turned around, the range of stretches) and the usual causes.
+void requirePositiveJacobian(const FamilyView& fam, int i, const double* y, const Mat3& F);
+
 PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn);
 
 // First Piola-Kirchhoff stress P = det(F) sigma F^-T with sigma = R tau R^T (Foster Eqs. 23-24).

@@ -182,6 +182,7 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
       sg = shapeAndGradient(fam, i, y, planar);
     else if (!tryShapeAndGradient(fam, i, y, planar, sg))
       detached[k] = 1, sg.Kinv = Mat3{}, sg.F = Fs.committedAt(i);  // no increment: the stress update is trivial
+    if (detached.empty() || !detached[k]) requirePositiveJacobian(fam, i, y, sg.F);
     const PolarUpdate pu = flanaganTaylor(Fs.committedAt(i), sg.F, Rs.committedAt(i), Vs.committedAt(i));
     Kinv[k] = sg.Kinv, F[k] = sg.F, R[k] = pu.R, de[k] = pu.dUnrot, tauN[k] = taus.committedAt(i);
     if (dissipatedWanted_) Jn[k] = det(Fs.committedAt(i));

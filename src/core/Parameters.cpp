@@ -9,10 +9,14 @@ namespace pf {
 
 namespace {
 
+// The shortest text that reads back as v: a bound's message must not print 1.0000001 as "1".
 std::string num(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
+  for (int digits = 6;; ++digits) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << v;
+    if (digits >= 17 || std::strtod(s.str().c_str(), nullptr) == v) return s.str();
+  }
 }
 
 ParameterSpec make(std::string name, ParameterSpec::Kind kind, std::string doc) {

@@ -2,6 +2,7 @@
 // the default layer width, node sets the names conditions and reactions refer to).
 #include "DeckParser.hpp"
 
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -58,6 +59,22 @@ std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<st
   return out;
 }
 
+// A 2D material's Thickness enters its constants, the discretization's the points' volumes: two different
+// values would give a model that is neither (the forces follow the volumes). A Text File mesh holds its
+// thickness in its volumes only, and is not checked.
+void requireOneThickness(const Deck& deck) {
+  const double h = deck.discretization.thickness;
+  if (!(h > 0.0)) return;
+  for (const BlockGroupSpec& b : deck.blocks) {
+    const MaterialSpec& m = deck.material(b.material);
+    if (!m.values.has("Thickness")) continue;
+    const double hm = m.values.get("Thickness");
+    if (std::fabs(hm - h) > 1e-12 * h)
+      fail(deck.file, "Materials/" + m.name, "'Thickness' = " + numberText(hm) + " differs from the Discretization's " +
+                                                 numberText(h) + " (the points' volumes): give both the same value");
+  }
+}
+
 }  // namespace
 
 Deck parseDeck(const PL& p, const std::string& file, const std::string& directory) {
@@ -75,6 +92,7 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
   deck.materials = parseMaterials(p, file);
   deck.damageModels = parseDamageModels(p, file);
   deck.blocks = parseBlocks(p, deck.materials, deck.damageModels, file);
+  requireOneThickness(deck);
   applyDefaultLayerWidth(deck.discretization, deck.maxHorizon(), file);
   const std::vector<std::string> generated = generatedNodeSetNames(deck.discretization);
   std::set<std::string> nodeSets(generated.begin(), generated.end());
@@ -90,6 +108,7 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
     deck.computes = parseComputes(p.sublist("Compute Class Parameters"), nodeSets, file);
   deck.outputs = outputs(p, deck, nodeSets);
   if (p.isSublist("Restart")) deck.restart = parseRestart(p.sublist("Restart"), file, deck.outputs);
+  checkWrittenFiles(deck);
   return deck;
 }
 

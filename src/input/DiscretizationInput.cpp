@@ -150,6 +150,29 @@ std::vector<ParameterSpec> holeSpecs(bool box) {
   return s;
 }
 
+namespace {
+
+// A generated lattice placed so far from zero that neighbouring points round to the same coordinates would
+// surface later as "two points with the same coordinates", naming no parameter: refused here. Double
+// precision holds about 15.9 digits; the spacing must stay above 1e-12 of the coordinates' magnitude so
+// that bond vectors keep at least three correct digits.
+void requireResolvableGrid(const DiscretizationSpec& s, const std::string& file, const std::string& path) {
+  using T = DiscretizationSpec::Type;
+  if (s.type == T::TextFile || s.type == T::Exodus) return;
+  const char* names[3][2] = {{"X Origin", "X Center"}, {"Y Origin", "Y Center"}, {"Z Origin", "Z Center"}};
+  for (int a = 0; a < 3; ++a) {
+    const double extent = s.type == T::Cylinder ? s.cylinderLength + s.radius : s.length[a];
+    const double spacing = s.type == T::QuickGrid ? s.length[a] / std::max(1, s.count[a]) : s.spacing;
+    const double magnitude = std::fabs(s.origin[a]) + extent;
+    if (spacing > 1e-12 * magnitude) continue;
+    fail(file, path, "'" + std::string(names[a][s.type == T::Cylinder]) + "' = " + numberText(s.origin[a]) +
+                         " puts the points so far from zero that their spacing " + numberText(spacing) +
+                         " is below double precision's resolution there (keep coordinates within 1e12 spacings of zero)");
+  }
+}
+
+}  // namespace
+
 DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, const std::string& dir) {
   const std::string path = "Discretization";
   if (!d.isParameter("Type")) fail(file, path, "missing required parameter 'Type'");
@@ -198,6 +221,7 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
                                       : DiscretizationSpec::Type::RectangleWithHoles;
     parseGenerator(d, v, s, file);
   }
+  requireResolvableGrid(s, file, path + (s.type == DiscretizationSpec::Type::QuickGrid ? "/TensorProduct3DMeshGenerator" : ""));
   s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path);
   s.partialVolume = v.flag("Partial Volume");
   s.omitBondsBetweenBlocks = v.text("Omit Bonds Between Blocks") == "All";

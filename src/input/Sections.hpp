@@ -69,4 +69,8 @@ std::vector<ComputeSpec> parseComputes(const PL& list, const std::set<std::strin
 std::vector<ParameterSpec> restartSpecs();
 RestartSpec parseRestart(const PL& r, const std::string& file, const std::vector<OutputSpec>& outputs);
 
+// The files the run writes (outputs, their part/lock/status files, the checkpoint): distinct from each other
+// and from the files it reads, each with a file name after its directory. Throws InputError.
+void checkWrittenFiles(const Deck& deck);
+
 }  // namespace pf

@@ -173,6 +173,27 @@ void warnPointsWithoutBonds(const Model& model, const std::string& inputFile) {
   warn(inputFile + msg);
 }
 
+// Collective. A body that starts behind its wall (a reversed normal, a plane through the body) would be
+// flattened onto the plane in the first step and fail there with an inverted family: an input error now.
+// Points on the plane within a millionth of the horizon are in front (a wall touching the body is the usual set-up).
+void requireInFrontOfWall(const Deck& deck, const RigidWallSpec& spec, const RigidWall& wall, const Model& model) {
+  const std::vector<double>& x = model.coordinates();
+  double behind = 0.0, depth = 0.0;
+  for (int i : wall.nodes) {
+    double gap = 0.0;
+    for (int c = 0; c < 3; ++c) gap += (x[3 * i + c] - wall.point[c]) * wall.normal[c];
+    if (gap < -1e-6 * deck.maxHorizon()) behind += 1.0, depth = std::max(depth, -gap);
+  }
+  behind = model.sum(behind);
+  depth = model.max(depth);
+  if (behind == 0.0) return;
+  char msg[300];
+  std::snprintf(msg, sizeof msg, "%.0f point(s) of node set '%s' start behind the wall (up to %g behind its plane); the "
+                "'Normal' points to the side the body stays on: is it reversed, or does the plane cut the body?",
+                behind, spec.nodeSet.c_str(), depth);
+  throw InputError(deck.file + ": Boundary Conditions/" + spec.name + ": " + msg);
+}
+
 // The deck's Rigid Walls on the owned points of their node sets (cloud index -> owned-local: localOf).
 void addRigidWalls(const Deck& deck, Problem& pb, const std::unordered_map<int, int>& localOf) {
   for (const RigidWallSpec& w : deck.walls) {
@@ -181,6 +202,7 @@ void addRigidWalls(const Deck& deck, Problem& pb, const std::unordered_map<int, 
       auto it = localOf.find(p);
       if (it != localOf.end()) wall.nodes.push_back(it->second);
     }
+    requireInFrontOfWall(deck, w, wall, *pb.model);
     pb.model->addRigidWall(std::move(wall));
   }
 }

@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -26,6 +27,24 @@ bool isZombie(long pid) {
   std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
   const std::size_t close = text.rfind(')');
   return close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'Z';
+}
+
+// The lock's PID as written ("<pid>\n"): 0 when the file is empty or holds anything else.
+long lockPid(const std::string& lock) {
+  std::ifstream in(lock);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  char* end = nullptr;
+  const long pid = std::strtol(text.c_str(), &end, 10);
+  return end != text.c_str() && std::string(end) == "\n" && pid > 0 ? pid : 0;
+}
+
+// Linux: whether /proc/<pid>/comm names this program (periforge, or a build variant periforge-...); true
+// when it cannot be read (another OS, a restricted /proc): a lock is then taken as held.
+bool runsThisProgram(long pid) {
+  std::ifstream comm("/proc/" + std::to_string(pid) + "/comm");
+  std::string name;
+  if (!std::getline(comm, name)) return true;
+  return name.rfind("periforge", 0) == 0;
 }
 
 }  // namespace
@@ -78,14 +97,21 @@ void OutputFiles::takeLock() {
   throw std::runtime_error(where_ + ": cannot take the lock file '" + base_ + ".lock'");
 }
 
-// kill(pid, 0) probes without signalling: 0 or EPERM means the process exists, unless it is a zombie (a
-// killed rank nobody has reaped yet, common in containers). A lock being written right now may still be
-// empty: treat it as live.
+// A lock is held while its PID runs this program. kill(pid, 0) probes without signalling: 0 or EPERM means
+// the process exists, unless it is a zombie (a killed rank nobody has reaped yet, common in containers) or a
+// later process that got the PID of a dead run (/proc/<pid>/comm names another program). A lock just created
+// by a run starting at the same moment is empty until its owner writes the PID, a few microseconds later:
+// it is read again for up to 2 s before an empty or unreadable lock counts as stale (a run killed between
+// the two calls, or a file someone else wrote).
 bool OutputFiles::lockHeldByLiveProcess(long* pid) const {
-  std::ifstream in(base_ + ".lock");
-  if (!(in >> *pid)) return true;
-  if (*pid <= 0 || (::kill(static_cast<pid_t>(*pid), 0) != 0 && errno != EPERM)) return false;
-  return !isZombie(*pid);
+  const std::string lock = base_ + ".lock";
+  *pid = lockPid(lock);
+  for (int wait = 0; *pid == 0 && wait < 40; ++wait) {
+    ::usleep(50000);
+    *pid = lockPid(lock);
+  }
+  if (*pid == 0 || (::kill(static_cast<pid_t>(*pid), 0) != 0 && errno != EPERM)) return false;
+  return !isZombie(*pid) && runsThisProgram(*pid);
 }
 
 void OutputFiles::writeStatus(const std::string& line) const {

@@ -14,6 +14,7 @@
 #include "HistoryWriter.hpp"
 #include "OutputFiles.hpp"
 #include "core/InputError.hpp"
+#include "solvers/Solver.hpp"
 #include "parallel/ChunkedGather.hpp"
 #include "parallel/Collective.hpp"
 
@@ -134,8 +135,8 @@ void OutputManager::openFiles() {
   }
 }
 
-// The history's columns, and the Exodus file's variables.
-void OutputManager::openWriters(bool append) {
+// The history's columns, on every rank (the finite check names them).
+std::vector<std::string> OutputManager::historyColumns() const {
   std::vector<std::string> cols = {"time", "step"};
   if (applied_) cols.push_back("Applied_Displacement");
   auto label = [](std::string s) {
@@ -155,8 +156,14 @@ void OutputManager::openWriters(bool append) {
     }
   const std::vector<std::string> computed = computes_.names();
   cols.insert(cols.end(), computed.begin(), computed.end());
-  history_ = std::make_unique<HistoryWriter>(files_->part(".csv"), cols, append);
+  return cols;
+}
+
+// The history's columns, and the Exodus file's variables.
+void OutputManager::openWriters(bool append) {
+  history_ = std::make_unique<HistoryWriter>(files_->part(".csv"), historyColumns(), append);
   if (!exodus_) return;
+  const std::vector<std::string> computed = computes_.names();
   std::vector<std::string> scalars = nodalScalars_, elements, globals = globals_;
   for (const std::string& var : elementScalars_) elements.push_back(exodusName(var));
   globals.insert(globals.end(), computed.begin(), computed.end());
@@ -206,12 +213,14 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
   lastTime_ = report.time;
   if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % frequency_ != 0) return;
   const std::vector<double> global = historyRow(report, u, v, f);
-  onRoot([&] {
-    std::vector<double> row = {report.time, static_cast<double>(count_ - 1)};
-    if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));
-    row.insert(row.end(), global.begin(), global.end());
-    history_->writeRow(row);
-  });
+  std::vector<double> row = {report.time, static_cast<double>(count_ - 1)};
+  if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));
+  row.insert(row.end(), global.begin(), global.end());
+  // Every rank holds the reduced row: all agree without a message, and nothing non-finite is written.
+  const std::vector<std::string> cols = historyColumns();
+  for (std::size_t k = 0; k < row.size(); ++k)
+    if (!std::isfinite(row[k])) throw nonFinite(cols[k], "history column", row[k]);
+  onRoot([&] { history_->writeRow(row); });
   if (exodus_) writeExodusStep(report.time, u, v, f);
 }
 
@@ -261,6 +270,8 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
   }
   const std::vector<std::string> computed = computes_.names();
   for (std::size_t k = 0; k < computed.size(); ++k) globals[computed[k]] = computeValues_[k];
+  for (const auto& [var, value] : globals)  // reduced: the same on every rank
+    if (!std::isfinite(value)) throw nonFinite(var, "global variable", value);
   // Rank 0 writes the fields chunk by chunk in cloud order as the ranks send their points' values, taken
   // straight from the model (parallel/ChunkedGather.hpp): no rank copies a whole field, not even its share.
   std::vector<ChunkedGather::Field> fields;
@@ -276,9 +287,11 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
   }
   const std::size_t nv = nodalVectors_.size(), ns = nv + nodalScalars_.size();
   const int numGlobal = gather_->numGlobal();
+  std::string bad;  // rank 0: the first non-finite field value of the step, described (the .e stays a .part)
   onRoot(
       [&] {
         gather_->gather(fields, [&](int begin, int count, const std::vector<const double*>& values) {
+          if (bad.empty()) bad = firstNonFinite(begin, count, values);
           if (begin == 0) writer_->beginStep(time);
           writer_->writeNodes(begin, count, {values.begin(), values.begin() + nv}, {values.begin() + nv, values.begin() + ns},
                               {values.begin() + ns, values.end()});
@@ -286,6 +299,39 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
         });
       },
       true);
+  bad = model_.layout().comm().broadcast(bad, 0);
+  if (!bad.empty()) throw SolverFailure("output '" + exodusName_ + "': non-finite " + bad + stepText());
+}
+
+// Rank 0, one gathered chunk: "<variable> (<value>) at point <id>" of the first non-finite value, or "".
+std::string OutputManager::firstNonFinite(int begin, int count, const std::vector<const double*>& values) const {
+  std::vector<std::pair<const std::string*, int>> vars;  // in the order of the gathered fields
+  for (const std::string& var : nodalVectors_) vars.emplace_back(&var, 3);
+  for (const std::string& var : nodalScalars_) vars.emplace_back(&var, 1);
+  for (const std::string& var : elementScalars_) vars.emplace_back(&var, 1);
+  for (std::size_t k = 0; k < vars.size(); ++k)
+    for (int i = 0; i < count * vars[k].second; ++i)
+      if (!std::isfinite(values[k][i])) {
+        std::ostringstream s;
+        s << *vars[k].first << " (" << values[k][i] << ") at point " << begin + i / vars[k].second + 1
+          << " (Element_Id)";
+        return s.str();
+      }
+  return "";
+}
+
+// " at step <n> (t = <t>)" of the step being written.
+std::string OutputManager::stepText() const {
+  std::ostringstream s;
+  s << " at step " << count_ - 1 << " (t = " << lastTime_ << ")";
+  return s.str();
+}
+
+SolverFailure OutputManager::nonFinite(const std::string& var, const char* kind, double value) const {
+  std::ostringstream s;
+  s << "output '" << baseName_ << "': " << kind << " " << var << " is " << value << stepText()
+    << " (a value beyond double precision's range, about 1.8e308): nothing non-finite is written";
+  return SolverFailure(s.str());
 }
 
 void OutputManager::saveTo(CheckpointData& data) const {

@@ -81,6 +81,10 @@ class OutputManager : public StepObserver {
   void onRoot(const std::function<void()>& write, bool everyRank = false);
   void openFiles();
   void openWriters(bool append);
+  std::vector<std::string> historyColumns() const;
+  std::string firstNonFinite(int begin, int count, const std::vector<const double*>& values) const;
+  std::string stepText() const;
+  SolverFailure nonFinite(const std::string& var, const char* kind, double value) const;
   std::vector<double> historyRow(const StepReport& report, const std::vector<double>& u,
                                  const std::vector<double>& v, const std::vector<double>& f);
   void writeExodusStep(double time, const std::vector<double>& u, const std::vector<double>& v,

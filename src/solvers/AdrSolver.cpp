@@ -20,7 +20,7 @@ SolverEntry AdrSolver::entry() {
   e.loadSteps = true;
   e.parameters = {
       S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1),
-      S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step").byDefault("1e-6").positive(),
+      S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step; at least 1e-14 (below, a converged step's residual is round-off)").byDefault("1e-6").atLeast(1e-14),
       S::real("Absolute Tolerance", "residual force-density norm that also ends a step (default: none)").positive(),
       S::integer("Maximum Iterations", "per load step; then the run fails").byDefault("100000").atLeast(1),
       S::real("Safety Factor", "multiplies the fictitious density").byDefault("1").positive(),
@@ -80,7 +80,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
   for (int k = 0; k < n; ++k) lambda[k] = 0.25 * opt_.safetyFactor * model.stiffnessBound()[k / 3];
   std::vector<double> f(n), b(n), r(n), rOld(n), v(n, 0.0);
   model.bodyForce(t, b.data());
-  model.internalForce(u.data(), f.data());
+  atStep(CheckPoint{"adaptive dynamic relaxation", step, t}, [&] { model.internalForce(u.data(), f.data()); });
   ResidualNorms nr = residualNorms(model, f, b);
   requireFiniteResidual(model, nr, step, t, f, b);
   double tol = 0;
@@ -118,7 +118,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
     }
     for (int k = 0; k < n; ++k) u[k] += v[k];
     rOld = r;
-    model.internalForce(u.data(), f.data());
+    atStep(CheckPoint{"adaptive dynamic relaxation", step, t}, [&] { model.internalForce(u.data(), f.data()); });
     nr = residualNorms(model, f, b);
     requireFiniteResidual(model, nr, step, t, f, b);
     if (opt_.verbose && root) std::printf("  ADR it %d  residual %.6e  damping %.4f\n", it + 1, nr.residual, c);

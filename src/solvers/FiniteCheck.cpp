@@ -72,4 +72,10 @@ void requireFiniteState(const Model& model, const CheckPoint& at, const std::vec
   throw SolverFailure(msg);
 }
 
+std::string stepText(const CheckPoint& at) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, " in %s step %ld (t = %.9g)", at.solver, at.step, at.time);
+  return buf;
+}
+
 }  // namespace pf

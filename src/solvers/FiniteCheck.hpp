@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/Material.hpp"
+
 namespace pf {
 
 class Model;
@@ -31,6 +33,18 @@ void requireFinite(const Model& model, const CheckPoint& at, const char* what, c
 void requireFiniteState(const Model& model, const CheckPoint& at, const std::vector<double>& u,
                         const std::vector<double>& v, const std::vector<double>& f, double localProbe);
 
+std::string stepText(const CheckPoint& at);  // " in <solver> step <step> (t = <time>)"
+
+// Runs evaluate() (a force evaluation); a ConstitutiveFailure from it (every rank gets the same one) comes
+// back naming where the solver was: "... in <solver> step <step> (t = <time>)".
+template <class Evaluate>
+void atStep(const CheckPoint& at, Evaluate&& evaluate) {
+  try {
+    evaluate();
+  } catch (const ConstitutiveFailure& e) {
+    throw ConstitutiveFailure(std::string(e.what()) + stepText(at));
+  }
+}
 // Sum of the values: finite when every value is (barring overflow near 1e308, itself a failure).
 double finiteProbe(const std::vector<double>& x);
 

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "FiniteCheck.hpp"
+#include "VerletSolver.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "model/Model.hpp"
@@ -95,12 +96,40 @@ struct Newmark {
   }
 };
 
+
+// A step that did not converge: its residual against the tolerance, or that the state left double precision.
+SolverFailure stepFailure(long s, double t, const NewtonOutcome& o, double scaled, double tolerance) {
+  char msg[300];
+  if (!std::isfinite(o.residualDensity))
+    std::snprintf(msg, sizeof msg, "Implicit: step %ld (t = %g): the residual is not finite (%g): the state left "
+                  "double precision's range (check the initial conditions' magnitudes and the loads)", s, t,
+                  o.residualDensity);
+  else
+    std::snprintf(msg, sizeof msg, "Implicit: step %ld (t = %g) did not converge in %d Newton iterations: "
+                  "residual beta dt^2 |rho a - f - b| = %.3e > Absolute Tolerance %.3e", s, t, o.iterations,
+                  scaled * o.residualDensity, tolerance);
+  return SolverFailure(msg);
+}
+
 }  // namespace
 
-void ImplicitSolver::check(const Model&) const {
-  if (opt_.beta < 0.5 * opt_.gamma)
-    warn(opt_.where + ": 'Beta' = " + num(opt_.beta) + " is below 'Gamma' / 2 = " + num(0.5 * opt_.gamma) +
-         ": Newmark's scheme is then only conditionally stable (above its step limit the run grows without bound)");
+// Newmark's scheme with beta < gamma / 2 is stable for omega dt <= 1 / sqrt(gamma / 2 - beta) (undamped; Hughes,
+// The Finite Element Method, Sec. 9.1). omega is bounded by the Verlet estimate's 2 / stable step (over the
+// points that move): as there, above the limit a warning, above twice it an input error, since the run would
+// grow without bound and end in a non-finite residual. The inertia term rho / (beta dt^2) must be finite too.
+void ImplicitSolver::check(const Model& model) const {
+  if (!std::isfinite(1.0 / (opt_.beta * opt_.dt * opt_.dt)))
+    throw InputError(opt_.where + ": 'Beta' dt^2 = " + num(opt_.beta * opt_.dt * opt_.dt) +
+                     " is too small: the inertia term rho / (Beta dt^2) overflows double precision");
+  if (!(opt_.beta < 0.5 * opt_.gamma)) return;
+  const double omegaDt = 2.0 / VerletSolver::stableTimeStep(model, true) * opt_.dt;
+  const double limit = 1.0 / std::sqrt(0.5 * opt_.gamma - opt_.beta);
+  const std::string what = opt_.where + ": 'Beta' = " + num(opt_.beta) + " is below 'Gamma' / 2 = " +
+                           num(0.5 * opt_.gamma) + ": Newmark's scheme is then stable for omega dt <= " + num(limit) +
+                           ", and the highest frequency of this model gives omega dt up to " + num(omegaDt);
+  if (omegaDt > 2.0 * limit)
+    throw InputError(what + "; reduce 'Fixed dt' or raise 'Beta' to 'Gamma' / 2 or more");
+  warn(what + (omegaDt > limit ? " (above the limit: the run may grow without bound)" : ""));
 }
 
 void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
@@ -134,7 +163,7 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
     a = resume->vector("Acceleration");
   } else {
     model.applyPrescribed(t0, u.data());
-    model.internalForce(u.data(), f.data());
+    atStep(CheckPoint{"Implicit", 0, t0}, [&] { model.internalForce(u.data(), f.data()); });
     model.commit();
     model.bodyForce(t0, b.data());
     // Newmark needs the initial acceleration M^-1 (f + b) (Peridigm starts from zero, the same only when
@@ -159,13 +188,10 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
     if (!o.converged) {
       model.rollback();
       u = uStart;
-      char msg[300];
-      std::snprintf(msg, sizeof msg, "Implicit: step %ld (t = %g) did not converge in %d Newton iterations: "
-                    "residual beta dt^2 |rho a - f - b| = %.3e > Absolute Tolerance %.3e", s, t, o.iterations,
-                    scaled * o.residualDensity, opt_.absoluteTolerance);
-      throw SolverFailure(msg);
+      throw stepFailure(s, t, o, scaled, opt_.absoluteTolerance);
     }
-    model.internalForce(u.data(), f.data());  // the last evaluation may have been a perturbed one
+    // the last evaluation may have been a perturbed one
+    atStep(CheckPoint{"Implicit", s, t}, [&] { model.internalForce(u.data(), f.data()); });
     model.commit();
     model.endBreakRounds();
     nm.correct(fixed, u, uStart, inertia.predictor, vTilde, v, a);

@@ -67,7 +67,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     if (resume->scalars.count("Peak Load")) peakLoad = resume->scalar("Peak Load");
   } else {
     model.applyPrescribed(t0, u.data());
-    model.internalForce(u.data(), f.data());
+    atStep(CheckPoint{"quasi-static", 0, t0}, [&] { model.internalForce(u.data(), f.data()); });
     std::fill(v.begin(), v.end(), 0.0);
     requireFiniteState(model, CheckPoint{"quasi-static", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(f));
     observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0, &carry}, u, v, f);
@@ -81,7 +81,8 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     const StepStats s = solveStep(u, duPrev, tA, tB, peakLoad);
     peakLoad = std::max(peakLoad, s.load);
     carry.scalars[0].second = peakLoad;
-    model.internalForce(u.data(), f.data());  // f for output; the state is committed already
+    // f for output; the state is committed already
+    atStep(CheckPoint{"quasi-static", step, tB}, [&] { model.internalForce(u.data(), f.data()); });
     double probe = 0.0;  // non-finite iff some u, v or f is: nothing non-finite is reported
     for (int k = 0; k < n; ++k) {
       v[k] = duPrev[k] / dt;

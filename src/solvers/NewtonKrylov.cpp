@@ -97,8 +97,16 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
 
   NewtonOutcome out;
   NOX::StatusTest::StatusType status = NOX::StatusTest::Failed;
+  Teuchos::RCP<NOX::Solver::Generic> solver;
   try {
-    Teuchos::RCP<NOX::Solver::Generic> solver = NOX::Solver::buildSolver(group, combo, params);
+    solver = NOX::Solver::buildSolver(group, combo, params);
+  } catch (const std::exception&) {
+    // NOX refused an option of a sub-list the deck passes through (the selectors were checked when the deck
+    // was read): an input error, not a step that failed to converge.
+    throw InputError(opt_.where + ": NOX cannot be set up with the options of its 'Direction' and 'Line Search' "
+                                  "sub-lists; check their names and values against NOX's documentation");
+  }
+  try {
     status = solver->solve();
     out.iterations = solver->getNumIterations();
     if (ls.isSublist("Output"))

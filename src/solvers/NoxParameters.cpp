@@ -2,6 +2,9 @@
 
 #include <NOX_Utils.H>
 
+#include <algorithm>
+#include <vector>
+
 #include "core/InputError.hpp"
 
 namespace pf {
@@ -81,9 +84,41 @@ LinearSolverChoice linearSolverChoice(Teuchos::ParameterList& ls, const std::str
   return c;
 }
 
+namespace {
+
+// One selector of NOX's factories must be one of the names it builds (NOX 13.2's Solver, Direction and
+// LineSearch factories). An unknown name would throw from inside the first Newton solve, which the solver
+// takes for a failed step: every step would then fall back to ADR and the run end "done" (issue 40).
+// "User Defined" needs a factory object no deck can give, and the prerelease directions are not built.
+std::string joinQuoted(const std::vector<std::string>& names) {
+  std::string s;
+  for (const std::string& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
+  return s;
+}
+
+void requireChoice(const Teuchos::ParameterList& l, const std::string& name, const std::vector<std::string>& valid,
+                   const std::string& at) {
+  if (!l.isParameter(name)) return;
+  if (!l.isType<std::string>(name)) throw InputError(at + "'" + name + "' must be a string, one of " + joinQuoted(valid));
+  const std::string v = l.get<std::string>(name);
+  if (std::find(valid.begin(), valid.end(), v) == valid.end())
+    throw InputError(at + "'" + name + "' = '" + v + "' is not one of NOX's: " + joinQuoted(valid));
+}
+
+}  // namespace
+
 void checkLinearSolver(const NewtonKrylovOptions& opt) {
   bool adaptive = false;
   auto params = noxParameters(opt, 0, &adaptive);
+  requireChoice(*params, "Nonlinear Solver",
+                {"Line Search Based", "Newton", "Trust Region Based", "Inexact Trust Region Based", "Tensor Based",
+                 "Anderson Accelerated Fixed-Point", "Single Step", "Pseudo-Transient"},
+                opt.where + ": ");
+  requireChoice(params->sublist("Direction"), "Method", {"Newton", "Steepest Descent", "NonlinearCG", "Broyden"},
+                opt.where + "/Direction: ");
+  requireChoice(params->sublist("Line Search"), "Method",
+                {"Full Step", "Backtrack", "Polynomial", "More'-Thuente", "NonlinearCG", "Safeguarded Step"},
+                opt.where + "/Line Search: ");
   linearSolverChoice(params->sublist("Direction").sublist("Newton").sublist("Linear Solver"), opt.where);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "NoxQuasiStaticSolver.hpp"
+#include "core/InputError.hpp"
 
 namespace pf {
 
@@ -11,8 +12,10 @@ namespace {
 using S = ParameterSpec;
 
 std::vector<ParameterSpec> commonSpecs() {
-  return {S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step")
-              .byDefault("1e-10").positive(),
+  return {S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step; "
+                                        "at least 1e-14 (about 50 machine epsilons: below, a converged step's residual is round-off "
+                                        "and the step could never end)")
+              .byDefault("1e-10").atLeast(1e-14),
           S::real("Absolute Tolerance", "residual force-density norm that ends a step; given alone (without "
                                         "`Relative Tolerance`) it is the only test").positive(),
           S::integer("Maximum Solver Iterations", "Newton iterations per (sub)step").byDefault("30").atLeast(1),
@@ -27,8 +30,10 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
   const bool absOnly = p.has("Absolute Tolerance") && !p.has("Relative Tolerance");
   o.newton.relativeTolerance = absOnly ? 0.0 : p.get("Relative Tolerance");
   o.newton.absoluteTolerance = p.get("Absolute Tolerance", 0.0);
-  o.newton.maxIterations = static_cast<int>(
-      p.has("Maximum Solver Iterations") ? p.get("Maximum Solver Iterations") : p.get("Max Solver Iterations", p.get("Maximum Solver Iterations")));
+  if (p.has("Maximum Solver Iterations") && p.has("Max Solver Iterations"))
+    throw InputError(p.where() + ": give 'Maximum Solver Iterations' or Peridigm's spelling 'Max Solver Iterations', "
+                                 "not both");
+  o.newton.maxIterations = static_cast<int>(p.get("Max Solver Iterations", p.get("Maximum Solver Iterations")));
   o.maxCuts = static_cast<int>(p.get("Maximum Load Step Cuts", o.maxCuts));
   o.newton.verbose = p.flag("Verbose");
   o.newton.precBondRadius = p.get("Preconditioner Bond Radius", o.newton.precBondRadius);

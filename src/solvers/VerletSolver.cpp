@@ -21,9 +21,11 @@ SolverEntry VerletSolver::entry() {
   e.dynamic = true;
   e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate; above that estimate "
                                       "a warning, above 2 × it an input error").positive(),
-                  S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ)").byDefault("0.8").positive(),
+                  S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ); above 1 a warning, above 2 "
+                                           "an input error (as `Fixed dt`)").byDefault("0.8").positive(),
                   S::flag("Allow Unstable Time Step",
-                          "accept a `Fixed dt` more than 2 × the stable step estimate (otherwise an input error)")
+                          "accept a `Fixed dt` or `Safety Factor` more than 2 × the stable step estimate (otherwise an "
+                          "input error)")
                       .byDefault("false")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     VerletOptions o;
@@ -84,7 +86,18 @@ double VerletSolver::timeStep(const Model& model) const {
 }
 
 void VerletSolver::check(const Model& model) const {
-  if (opt_.fixedDt <= 0) return;
+  if (opt_.fixedDt <= 0) {
+    // The default step is Safety Factor x the estimate: bounded as a Fixed dt is (a factor of 1e300 would step
+    // over the whole interval at once and end "done" with a blown-up state).
+    char msg[160];
+    std::snprintf(msg, sizeof msg, "'Safety Factor' = %g makes the time step %g times the stable step estimate",
+                  opt_.safetyFactor, opt_.safetyFactor);
+    if (opt_.safetyFactor > kRefuseFactor && !opt_.allowUnstable)
+      throw InputError(opt_.where + ": " + msg + "; above " + std::to_string(static_cast<int>(kRefuseFactor)) +
+                       " it is refused unless 'Allow Unstable Time Step' is true");
+    if (opt_.safetyFactor > 1.0) warn(opt_.where + ": " + msg + "; the run may go unstable");
+    return;
+  }
   // Only points with a free component can go unstable: a point whose motion is prescribed in all three
   // directions is moved by its condition, not by the integrator (Peridigm's fully prescribed decks, the affine
   // material point). The default step (timeStep) still bounds every point, as Peridigm's does.
@@ -125,7 +138,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.bodyForce(resume->time, b.data());
   } else {
     model.applyPrescribed(t0, u.data());
-    model.internalForce(u.data(), f.data());
+    atStep(CheckPoint{"Verlet", 0, t0}, [&] { model.internalForce(u.data(), f.data()); });
     model.commit();
     model.bodyForce(t0, b.data());
   }
@@ -152,7 +165,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) / dt;
-    forceTime.time([&] { model.internalForce(u.data(), f.data()); });
+    forceTime.time([&] { atStep(CheckPoint{"Verlet", s, t}, [&] { model.internalForce(u.data(), f.data()); }); });
     model.commit();  // an explicit step is complete once its force is evaluated
     if (model.hasBodyForce()) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)

@@ -1,0 +1,65 @@
+// The files a run writes, checked against each other and against the files it reads, once the deck is
+// parsed: a checkpoint named like an output's part, lock or status file, or like the deck itself, would
+// overwrite or delete it in the middle of the run (issue 40).
+#include <filesystem>
+#include <map>
+
+#include "Sections.hpp"
+
+namespace pf {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The path as the file system sees it (relative names against the working directory, "./a" = "a",
+// symbolic links of existing parents resolved), so that two spellings of one file compare equal.
+std::string identity(const std::string& path) {
+  std::error_code ec;
+  const fs::path canonical = fs::weakly_canonical(fs::absolute(path), ec);
+  return ec ? fs::absolute(path).lexically_normal().string() : canonical.string();
+}
+
+// A base name to which suffixes are appended must end in a file name: "", "/", "./", "dir/" or "." would
+// write hidden files (".csv") or files into a directory the user did not name as a file.
+void requireFileBase(const std::string& base, const std::string& file, const std::string& where,
+                     const std::string& parameter) {
+  const std::string name = fs::path(base).filename().string();
+  if (name.empty() || name == "." || name == "..")
+    fail(file, where, "'" + parameter + "' = '" + base + "' names a directory, not a file: give a base name such as 'out'");
+  std::error_code ec;
+  if (fs::is_directory(base, ec))
+    fail(file, where, "'" + parameter + "' = '" + base + "' is an existing directory: give a file's base name");
+}
+
+}  // namespace
+
+void checkWrittenFiles(const Deck& deck) {
+  // identity -> what it is, for the message: "the deck", "Output/Output Filename's .e.part", ...
+  std::map<std::string, std::string> taken;
+  auto claim = [&](const std::string& path, const std::string& what, const std::string& where,
+                   const std::string& parameter) {
+    const auto [it, added] = taken.emplace(identity(path), what);
+    if (!added)
+      fail(deck.file, where, "'" + parameter + "' makes the run write '" + path + "', which is " + it->second +
+                                 ": choose another name");
+  };
+  taken.emplace(identity(deck.file), "the input deck");
+  if (!deck.discretization.meshFile.empty()) taken.emplace(identity(deck.discretization.meshFile), "the mesh file");
+  for (const NodeSetSpec& s : deck.nodeSets)
+    if (s.kind == NodeSetSpec::Kind::File) taken.emplace(identity(s.text), "node set '" + s.name + "''s file");
+  for (const OutputSpec& o : deck.outputs) {
+    requireFileBase(o.filename, deck.file, o.listName, "Output Filename");
+    std::vector<std::string> suffixes = {".csv", ".csv.part", ".lock", ".status"};
+    if (o.exodus) suffixes.insert(suffixes.end(), {".e", ".e.part"});
+    for (const std::string& s : suffixes)
+      claim(o.filename + s, o.listName + "'s '" + o.filename + s + "'", o.listName, "Output Filename");
+  }
+  if (deck.restart.given) {
+    const std::string& c = deck.restart.checkpointFile;
+    requireFileBase(c, deck.file, "Restart", "Checkpoint Filename");
+    claim(c, "the checkpoint", "Restart", "Checkpoint Filename");
+    claim(c + ".tmp", "the checkpoint's temporary file '" + c + ".tmp'", "Restart", "Checkpoint Filename");
+  }
+}
+
+}  // namespace pf
