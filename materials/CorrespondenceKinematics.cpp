@@ -112,7 +112,7 @@ void requirePositiveJacobian(const FamilyView& fam, int i, const double* y, cons
     const double stretch = std::sqrt(l / l0) - 1.0;
     stretchMin = std::min(stretchMin, stretch), stretchMax = std::max(stretchMax, stretch);
   }
-  char buf[400];
+  char buf[700];
   std::snprintf(buf, sizeof buf,
                 "correspondence model: det F = %.3g <= 0 at %s, displaced by (%.3g, %.3g, %.3g): of its %d bonds %d "
                 "point against their reference direction, bond stretches %.3g .. %.3g (a family turned inside out: "
