@@ -19,7 +19,8 @@ SolverEntry ImplicitSolver::entry() {
   e.doc = "Peridigm's implicit dynamics: Newmark-beta with a fixed time step, Newton-Krylov per step";
   e.dynamic = true;
   ParameterSpec beta = S::real("Beta", "Newmark's β; ¼ (with `Gamma` ½): the trapezoidal rule, unconditionally stable; "
-                                       "below `Gamma`/2 only conditionally stable (a warning)")
+                                       "below `Gamma`/2 stable for ω dt ≤ 1/√(γ/2 − β), ω bounded by the model's highest "
+                                       "frequency estimate: a warning, above twice that limit an input error")
                            .byDefault("0.25").positive();
   beta.max = 0.5;  // beyond 1/2 the scheme is no longer second order nor Peridigm's; (0, 1/2]
   e.parameters = {

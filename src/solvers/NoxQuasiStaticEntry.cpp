@@ -65,7 +65,8 @@ SolverEntry NoxQuasiStaticSolver::entry() {
   e.parameters.push_back(S::integer("Max Solver Iterations", "Peridigm's name for `Maximum Solver Iterations`").atLeast(1));
   e.parameters.push_back(S::integer("Maximum Load Step Cuts", "a failing step is halved at most this many times, then "
                                                               "relaxed by ADR").byDefault("4").nonNegative());
-  e.parameters.push_back(S::text("Nonlinear Solver", "NOX's (default `Line Search Based`)"));
+  e.parameters.push_back(S::text("Nonlinear Solver", "NOX's (default `Line Search Based`); checked against the names NOX builds, as are "
+                                                  "`Direction`/`Method` and `Line Search`/`Method`"));
   e.parameters.push_back(S::real("Preconditioner Bond Radius", "the preconditioner keeps bonds up to this many shortest "
                                                                "bonds long").byDefault("3").atLeast(1));
   e.parameters.push_back(S::text("Jacobian", "the Krylov operator: `Exact` = the materials' directional derivative "
