@@ -3,7 +3,7 @@
 #include <csignal>
 #include <sstream>
 
-#include "StopSignal.hpp"
+#include "core/StopSignal.hpp"
 
 namespace pf {
 

@@ -5,7 +5,7 @@
 
 #include "Checkpoint.hpp"
 #include "OutputFanout.hpp"
-#include "StopSignal.hpp"
+#include "core/StopSignal.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "core/Material.hpp"

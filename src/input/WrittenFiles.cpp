@@ -13,10 +13,14 @@ namespace fs = std::filesystem;
 
 // The path as the file system sees it (relative names against the working directory, "./a" = "a",
 // symbolic links of existing parents resolved), so that two spellings of one file compare equal.
+// An empty path stays "" (the readers name it later); nothing here throws.
 std::string identity(const std::string& path) {
+  if (path.empty()) return "";
   std::error_code ec;
-  const fs::path canonical = fs::weakly_canonical(fs::absolute(path), ec);
-  return ec ? fs::absolute(path).lexically_normal().string() : canonical.string();
+  const fs::path absolute = fs::absolute(path, ec);
+  if (ec) return fs::path(path).lexically_normal().string();
+  const fs::path canonical = fs::weakly_canonical(absolute, ec);
+  return ec ? absolute.lexically_normal().string() : canonical.string();
 }
 
 // A base name to which suffixes are appended must end in a file name: "", "/", "./", "dir/" or "." would
@@ -43,10 +47,13 @@ void checkWrittenFiles(const Deck& deck) {
       fail(deck.file, where, "'" + parameter + "' makes the run write '" + path + "', which is " + it->second +
                                  ": choose another name");
   };
-  taken.emplace(identity(deck.file), "the input deck");
-  if (!deck.discretization.meshFile.empty()) taken.emplace(identity(deck.discretization.meshFile), "the mesh file");
+  auto read = [&](const std::string& path, const std::string& what) {
+    if (!path.empty()) taken.emplace(identity(path), what);
+  };
+  read(deck.file, "the input deck");
+  read(deck.discretization.meshFile, "the mesh file");
   for (const NodeSetSpec& s : deck.nodeSets)
-    if (s.kind == NodeSetSpec::Kind::File) taken.emplace(identity(s.text), "node set '" + s.name + "''s file");
+    if (s.kind == NodeSetSpec::Kind::File) read(s.text, "node set '" + s.name + "''s file");
   for (const OutputSpec& o : deck.outputs) {
     requireFileBase(o.filename, deck.file, o.listName, "Output Filename");
     std::vector<std::string> suffixes = {".csv", ".csv.part", ".lock", ".status"};

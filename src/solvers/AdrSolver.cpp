@@ -1,6 +1,7 @@
 #include "AdrSolver.hpp"
 
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 
 #include "BreakRounds.hpp"
@@ -8,6 +9,7 @@
 #include "LoadStepping.hpp"
 #include "YieldRounds.hpp"
 #include "core/InputError.hpp"
+#include "core/StopSignal.hpp"
 #include "model/Model.hpp"
 
 namespace pf {
@@ -68,6 +70,20 @@ void requireFiniteResidual(Model& model, const ResidualNorms& nr, long step, dou
   requireFinite(model, CheckPoint{"adaptive dynamic relaxation", step, t}, "residual", r, NAN);  // norm overflow
 }
 
+// A load step may take 10^5 iterations (minutes): SIGTERM/SIGINT are polled every kSignalPoll iterations, all
+// ranks agreeing (one reduction), and stop the run inside the step, the step's state rolled back; the output
+// files keep the converged steps (docs/output.md).
+constexpr int kSignalPoll = 500;
+
+void stopIfSignalled(Model& model, double t) {
+  const int signal = static_cast<int>(model.max(static_cast<double>(stopSignal())));
+  if (signal == 0) return;
+  model.rollback();
+  char what[160];
+  std::snprintf(what, sizeof what, "stopped by %s during the load step to t = %g", signal == SIGINT ? "SIGINT" : "SIGTERM", t);
+  throw Interrupted(signal, what);
+}
+
 }  // namespace
 
 AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, double t,
@@ -122,6 +138,7 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
     nr = residualNorms(model, f, b);
     requireFiniteResidual(model, nr, step, t, f, b);
     if (opt_.verbose && root) std::printf("  ADR it %d  residual %.6e  damping %.4f\n", it + 1, nr.residual, c);
+    if ((it + 1) % kSignalPoll == 0) stopIfSignalled(model, t);
   }
   return {it, nr.residual, tol, nr.load};
 }

@@ -1,7 +1,8 @@
 #pragma once
 // SIGTERM and SIGINT ask a run to stop between two steps instead of killing it mid-write: the handler only
 // records the signal (no I/O in a handler) and restores the default action, so a second signal kills as
-// usual. The run polls stopSignal() after each step and throws Interrupted (see OutputFanout).
+// usual. The run polls stopSignal() after each step and throws Interrupted (see OutputFanout); a solver whose
+// step can take minutes (ADR's relaxation) polls it within the step too.
 #include <stdexcept>
 #include <string>
 
