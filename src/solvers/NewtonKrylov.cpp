@@ -3,6 +3,7 @@
 #include <NOX.H>
 
 #include <algorithm>
+#include <csignal>
 
 #include "BreakRounds.hpp"
 #include "KrylovSolver.hpp"
@@ -11,6 +12,7 @@
 #include "NoxStepGroup.hpp"
 #include "StepEquations.hpp"
 #include "core/InputError.hpp"
+#include "core/StopSignal.hpp"
 #include "model/Model.hpp"
 
 namespace pf {
@@ -20,9 +22,15 @@ namespace {
 // (loadScale, the same test ADR uses) or the force-density residual is below the absolute tolerance.
 class ForceResidualTest : public NOX::StatusTest::Generic {
  public:
-  ForceResidualTest(const StepResidual& p, double rel, double abs, double loadFloor)
-      : problem_(p), rel_(rel), abs_(abs), floor_(loadFloor) {}
+  ForceResidualTest(const Model& model, const StepResidual& p, double rel, double abs, double loadFloor)
+      : model_(model), problem_(p), rel_(rel), abs_(abs), floor_(loadFloor) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
+    // SIGTERM/SIGINT end the run between Newton iterations too: a step whose Krylov solves fail may take
+    // minutes (every rank checks here, after the same iteration; one reduction).
+    const int signal = static_cast<int>(model_.max(static_cast<double>(stopSignal())));
+    if (signal != 0)
+      throw Interrupted(signal, std::string("stopped by ") + (signal == SIGINT ? "SIGINT" : "SIGTERM") +
+                                    " during the Newton iterations of a step");
     if (!solver.getSolutionGroup().isF()) return status_ = NOX::StatusTest::Unevaluated;
     last_ = problem_.norms();
     tol_ = rel_ * loadScale(last_, floor_);
@@ -49,6 +57,7 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
   double tolerance() const { return tol_; }
 
  private:
+  const Model& model_;
   const StepResidual& problem_;
   double rel_, abs_, floor_, tol_ = 0;
   ResidualNorms last_;
@@ -80,7 +89,7 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
   auto params = noxParameters(opt_, model.layout().rank(), &adaptiveTolerance);
   Teuchos::ParameterList& ls = params->sublist("Direction").sublist("Newton").sublist("Linear Solver");
 
-  auto force = Teuchos::rcp(new ForceResidualTest(residual, opt_.relativeTolerance, opt_.absoluteTolerance, loadFloor));
+  auto force = Teuchos::rcp(new ForceResidualTest(model, residual, opt_.relativeTolerance, opt_.absoluteTolerance, loadFloor));
   auto combo = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   combo->addStatusTest(force);
   combo->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(opt_.maxIterations)));
@@ -114,6 +123,8 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
     dynamic_cast<const NoxStepGroup&>(solver->getSolutionGroup()).copyX(u);
   } catch (const InputError&) {
     throw;  // the deck's linear solver list names something unknown
+  } catch (const Interrupted&) {
+    throw;  // a stop signal, not a failed step
   } catch (const std::exception&) {
     status = NOX::StatusTest::Failed;
   }
