@@ -61,6 +61,14 @@ void checkWrittenFiles(const Deck& deck) {
     for (const std::string& s : suffixes)
       claim(o.filename + s, o.listName + "'s '" + o.filename + s + "'", o.listName, "Output Filename");
   }
+  // A base name equal to another file of the run (Output2 = 'out.e' beside Output 'out', or the deck) gives
+  // files that read as variants of that one's ('out.e.csv', 'deck.xml.e'): refused as well.
+  for (const OutputSpec& o : deck.outputs) {
+    const auto it = taken.find(identity(o.filename));
+    if (it != taken.end())
+      fail(deck.file, o.listName, "'Output Filename' = '" + o.filename + "' is the name of " + it->second +
+                                      ": its files would read as variants of that one; choose another name");
+  }
   if (deck.restart.given) {
     const std::string& c = deck.restart.checkpointFile;
     requireFileBase(c, deck.file, "Restart", "Checkpoint Filename");

@@ -127,6 +127,8 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
     throw;  // a stop signal, not a failed step
   } catch (const std::exception&) {
     status = NOX::StatusTest::Failed;
+  } catch (...) {  // NOX throws plain strings ("NOX Error") where a direction or line search cannot go on
+    status = NOX::StatusTest::Failed;
   }
   out.converged = status == NOX::StatusTest::Converged && force->getStatus() == NOX::StatusTest::Converged;
   out.residual = force->last().residual;

@@ -86,24 +86,35 @@ LinearSolverChoice linearSolverChoice(Teuchos::ParameterList& ls, const std::str
 
 namespace {
 
-// One selector of NOX's factories must be one of the names it builds (NOX 13.2's Solver, Direction and
-// LineSearch factories). An unknown name would throw from inside the first Newton solve, which the solver
-// takes for a failed step: every step would then fall back to ADR and the run end "done" (issue 40).
-// "User Defined" needs a factory object no deck can give, and the prerelease directions are not built.
+// One selector of NOX's factories must be a name this engine can run. An unknown name would throw from inside
+// the first Newton solve, which the solver took for a failed step: every step then fell back to ADR and the
+// run ended "done" (issue 40). Names NOX 13.2 builds but this engine cannot serve are refused with the reason:
+// the matrix-free group applies J and a preconditioned J^-1, never J^T (steepest descent, trust regions,
+// More'-Thuente's gradient, Broyden's J^-1 update); Pseudo-Transient needs a Thyra model evaluator and Safeguarded
+// Step user bounds; Single Step has no convergence test (every step would end unconverged).
+struct Choice {
+  std::vector<std::string> valid;
+  std::vector<std::pair<std::string, std::string>> refused;  // NOX's name, why this engine cannot run it
+};
+
 std::string joinQuoted(const std::vector<std::string>& names) {
   std::string s;
   for (const std::string& n : names) s += (s.empty() ? "'" : ", '") + n + "'";
   return s;
 }
 
-void requireChoice(const Teuchos::ParameterList& l, const std::string& name, const std::vector<std::string>& valid,
-                   const std::string& at) {
+void requireChoice(const Teuchos::ParameterList& l, const std::string& name, const Choice& c, const std::string& at) {
   if (!l.isParameter(name)) return;
-  if (!l.isType<std::string>(name)) throw InputError(at + "'" + name + "' must be a string, one of " + joinQuoted(valid));
+  if (!l.isType<std::string>(name)) throw InputError(at + "'" + name + "' must be a string, one of " + joinQuoted(c.valid));
   const std::string v = l.get<std::string>(name);
-  if (std::find(valid.begin(), valid.end(), v) == valid.end())
-    throw InputError(at + "'" + name + "' = '" + v + "' is not one of NOX's: " + joinQuoted(valid));
+  if (std::find(c.valid.begin(), c.valid.end(), v) != c.valid.end()) return;
+  for (const auto& [refused, why] : c.refused)
+    if (v == refused)
+      throw InputError(at + "'" + name + "' = '" + v + "' " + why + "; use " + joinQuoted(c.valid));
+  throw InputError(at + "'" + name + "' = '" + v + "' is not one of NOX's that this engine runs: " + joinQuoted(c.valid));
 }
+
+const char* kNeedsTranspose = "needs the transposed Jacobian, which the matrix-free engine does not apply";
 
 }  // namespace
 
@@ -111,13 +122,22 @@ void checkLinearSolver(const NewtonKrylovOptions& opt) {
   bool adaptive = false;
   auto params = noxParameters(opt, 0, &adaptive);
   requireChoice(*params, "Nonlinear Solver",
-                {"Line Search Based", "Newton", "Trust Region Based", "Inexact Trust Region Based", "Tensor Based",
-                 "Anderson Accelerated Fixed-Point", "Single Step", "Pseudo-Transient"},
+                {{"Line Search Based", "Newton", "Anderson Accelerated Fixed-Point"},
+                 {{"Trust Region Based", kNeedsTranspose},
+                  {"Inexact Trust Region Based", kNeedsTranspose},
+                  {"Tensor Based", "needs NOX's tensor line searches and the transposed Jacobian"},
+                  {"Pseudo-Transient", "needs a Thyra model evaluator, not this engine's group"},
+                  {"Single Step", "takes one Newton step without a convergence test (every load step would fail)"}}},
                 opt.where + ": ");
-  requireChoice(params->sublist("Direction"), "Method", {"Newton", "Steepest Descent", "NonlinearCG", "Broyden"},
+  requireChoice(params->sublist("Direction"), "Method",
+                {{"Newton", "NonlinearCG"},
+                 {{"Steepest Descent", kNeedsTranspose},
+                  {"Broyden", "needs the inverse Jacobian's update, which the matrix-free engine does not hold"}}},
                 opt.where + "/Direction: ");
   requireChoice(params->sublist("Line Search"), "Method",
-                {"Full Step", "Backtrack", "Polynomial", "More'-Thuente", "NonlinearCG", "Safeguarded Step"},
+                {{"Full Step", "Backtrack", "Polynomial", "NonlinearCG"},
+                 {{"More'-Thuente", "needs the merit function's gradient (the transposed Jacobian)"},
+                  {"Safeguarded Step", "needs user-defined bounds no deck can give"}}},
                 opt.where + "/Line Search: ");
   linearSolverChoice(params->sublist("Direction").sublist("Newton").sublist("Linear Solver"), opt.where);
 }
