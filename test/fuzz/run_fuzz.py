@@ -10,7 +10,9 @@ Classes (docs/verification.md, "Fuzz test"):
                step and node); every other line of ours is a warning, and no <name>.e / <name>.csv was
                left (a failed run keeps only .part files);
   crash        killed by a signal (exit < 0 or >= 128), or abort/backtrace/uncaught-exception text;
-  hang         still running after the timeout (killed with its process group);
+  slow         still running after the timeout, and stopped by SIGTERM within 15 s with its one line (not
+               a failure: a valid deck that runs long, now stopped as a user would);
+  hang         still running after the timeout and not stopped by SIGTERM (killed with its process group);
   unclear      any other non-zero exit: no error line, several, one naming nothing, stray stderr text;
   bad output   exit 0 with a non-finite number in a CSV, or result files left by a failed run.
 
@@ -36,6 +38,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import generate_decks  # noqa: E402
 
 TIMEOUT = 30.0
+STOP_GRACE = 15.0  # seconds a timed-out run has to stop on SIGTERM before it counts as a hang
 FAILING = ("crash", "hang", "unclear", "bad output")
 CRASH_TEXT = re.compile(r"terminate called|Assertion|Segmentation|Aborted|core dumped|[Bb]acktrace|"
                         r"(?i:signal)|MPI_ABORT|Throw number|Throw test|what\(\):|double free|corrupted")
@@ -93,7 +96,7 @@ def classify(code, out, err, deck, files, np):
     return "clean error", ""
 
 
-def run_case(exe, mpirun, np, name, text, root):
+def run_case(exe, mpirun, np, name, text, root, timeout=None):
     """Runs one deck in root/name/run (a level down, so that '../x' output names stay inside root/name)."""
     case_dir = os.path.join(root, name)
     run_dir = os.path.join(case_dir, "run")
@@ -107,13 +110,22 @@ def run_case(exe, mpirun, np, name, text, root):
     start = time.monotonic()
     p = subprocess.Popen(cmd, cwd=run_dir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env,
                          start_new_session=True)
+    stopped = False
     try:
-        out, err = p.communicate(timeout=TIMEOUT)
+        out, err = p.communicate(timeout=timeout or TIMEOUT)
         code = p.returncode
     except subprocess.TimeoutExpired:
-        os.killpg(p.pid, signal.SIGKILL)  # mpirun and its ranks are in the group
-        out, err = p.communicate()
-        code = None
+        # A run still going is asked to stop as a user would (SIGTERM to the group). One that stops within
+        # STOP_GRACE s with its "stopped by SIGTERM" line is slow, not hung; one that does not is killed: a hang.
+        os.killpg(p.pid, signal.SIGTERM)
+        try:
+            out, err = p.communicate(timeout=STOP_GRACE)
+            stopped = p.returncode == 128 + signal.SIGTERM and b"stopped by SIGTERM" in err
+            code = p.returncode if stopped else None
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, signal.SIGKILL)  # mpirun and its ranks are in the group
+            out, err = p.communicate()
+            code = None
     elapsed = time.monotonic() - start
     for stream, data in (("stdout.txt", out), ("stderr.txt", err)):  # kept with the deck if it fails
         with open(os.path.join(case_dir, stream), "wb") as f:
@@ -125,6 +137,8 @@ def run_case(exe, mpirun, np, name, text, root):
             if f.endswith((".e", ".csv")):
                 with open(os.path.join(d, f), "rb") as fh:
                     files[f] = fh.read().decode("utf-8", "replace") if f.endswith(".csv") else ""
+    if stopped:
+        return "slow", f"still running after {timeout or TIMEOUT:.0f} s; stopped by SIGTERM", elapsed, err
     kind, reason = classify(code, out, err, os.path.basename(deck), files, np)
     return kind, reason, elapsed, err
 
@@ -153,7 +167,7 @@ def main():
     root = tempfile.mkdtemp(prefix="fuzz_")
     with ThreadPoolExecutor(max_workers=a.jobs) as pool:
         results = list(pool.map(lambda c: run_case(a.exe, a.mpirun, a.np, c[0], c[3], root), cases))
-    counts = {k: 0 for k in ("ok", "clean error") + FAILING}
+    counts = {k: 0 for k in ("ok", "clean error", "slow") + FAILING}
     for (name, base, desc, _), (kind, reason, elapsed, err) in zip(cases, results):
         counts[kind] += 1
         if a.verbose:
