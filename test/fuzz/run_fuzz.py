@@ -37,6 +37,9 @@ from concurrent.futures import ThreadPoolExecutor
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import generate_decks  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "regression"))
+from process_kill import ranks  # noqa: E402
+
 TIMEOUT = 30.0
 STOP_GRACE = 15.0  # seconds a timed-out run has to stop on SIGTERM before it counts as a hang
 FAILING = ("crash", "hang", "unclear", "bad output")
@@ -117,10 +120,16 @@ def run_case(exe, mpirun, np, name, text, root, timeout=None):
     except subprocess.TimeoutExpired:
         # A run still going is asked to stop as a user would (SIGTERM to the group). One that stops within
         # STOP_GRACE s with its "stopped by SIGTERM" line is slow, not hung; one that does not is killed: a hang.
-        os.killpg(p.pid, signal.SIGTERM)
+        # Under mpirun the ranks are signalled, not mpirun (which would kill them before they reach a poll).
+        for pid in ranks(p, np == 1):
+            try:
+                os.kill(pid, signal.SIGTERM)
+            except ProcessLookupError:
+                pass
         try:
             out, err = p.communicate(timeout=STOP_GRACE)
-            stopped = p.returncode == 128 + signal.SIGTERM and b"stopped by SIGTERM" in err
+            # mpirun reports a rank's exit code 143 as its own (or as 1 with its banner): the line decides there.
+            stopped = (p.returncode == 128 + signal.SIGTERM or np > 1) and b"stopped by SIGTERM" in err
             code = p.returncode if stopped else None
         except subprocess.TimeoutExpired:
             os.killpg(p.pid, signal.SIGKILL)  # mpirun and its ranks are in the group
