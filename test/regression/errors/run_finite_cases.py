@@ -128,17 +128,26 @@ def problems_of(p, d, want_ok, words):
     return found, msg
 
 
-def main(exe, reg, mpirun):
+def run_cases(exe, reg, mpirun, cases, more_problems=None):
+    """Runs each case at its rank counts in a fresh directory (beside the deck: the .txt files of its base's
+    directory, node sets and meshes); more_problems(d, deck, text) adds a caller's checks. Exit status."""
     failures = total = 0
-    for name, base, edits, mesh, nps, want_ok, words in CASES:
+    for name, base, edits, mesh, nps, want_ok, words in cases:
         for np in nps:
             total += 1
             d = tempfile.mkdtemp()
             try:
+                src = os.path.dirname(os.path.join(reg, base))
+                for side in os.listdir(src):
+                    if side.endswith(".txt"):
+                        shutil.copy(os.path.join(src, side), d)
                 deck = make_deck(reg, base, edits, mesh, d)
+                text = open(deck).read()
                 cmd = [exe, deck] if np == 1 else mpirun + ["-np", str(np), exe, deck]
                 p = subprocess.run(cmd, cwd=d, capture_output=True, text=True, timeout=240)
                 problems, msg = problems_of(p, d, want_ok, words)
+                if more_problems:
+                    problems += more_problems(d, deck, text)
             finally:
                 shutil.rmtree(d, ignore_errors=True)
             print(f"[{name}, np {np}] {'ok' if not problems else 'FAIL: ' + '; '.join(problems)}\n    {msg}")
@@ -148,4 +157,4 @@ def main(exe, reg, mpirun):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1], sys.argv[2], sys.argv[3:]))
+    sys.exit(run_cases(sys.argv[1], sys.argv[2], sys.argv[3:], CASES))
