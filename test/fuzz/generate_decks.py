@@ -290,18 +290,20 @@ def write_case(directory, name, text):
     return path
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+def write_decks(doc, generate_cases, count, seed, index_line):
+    """The command line of a deck generator: OUT_DIR [--count N] [--seed S]; writes every case's deck and
+    OUT_DIR/index.txt, one index_line(case) per case (case: generate_cases(count, seed)'s tuples)."""
+    ap = argparse.ArgumentParser(description=doc.split("\n")[0])
     ap.add_argument("out")
-    ap.add_argument("--count", type=int, default=COUNT)
-    ap.add_argument("--seed", type=int, default=SEED)
+    ap.add_argument("--count", type=int, default=count)
+    ap.add_argument("--seed", type=int, default=seed)
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     with open(os.path.join(a.out, "index.txt"), "w") as index:
-        for name, base, desc, text in generate(a.count, a.seed):
-            write_case(a.out, name, text)
-            index.write(f"{name}\t{base}\t{desc}\n")
+        for case in generate_cases(a.count, a.seed):
+            write_case(a.out, case[0], case[3])
+            index.write(index_line(case) + "\n")
 
 
 if __name__ == "__main__":
-    main()
+    write_decks(__doc__, generate, COUNT, SEED, lambda c: f"{c[0]}\t{c[1]}\t{c[2]}")

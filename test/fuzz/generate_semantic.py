@@ -25,7 +25,6 @@ usage: generate_semantic.py OUT_DIR [--count N] [--seed S]
   writes OUT_DIR/<case>.xml and OUT_DIR/index.txt (name, base, expectation, description per line);
   scripts/fuzz imports generate() instead.
 """
-import argparse
 import math
 import os
 import random
@@ -573,18 +572,6 @@ def generate(count=COUNT, seed=SEED):
     return cases
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("out")
-    ap.add_argument("--count", type=int, default=COUNT)
-    ap.add_argument("--seed", type=int, default=SEED)
-    a = ap.parse_args()
-    os.makedirs(a.out, exist_ok=True)
-    with open(os.path.join(a.out, "index.txt"), "w") as index:
-        for name, base, desc, text, check in generate(a.count, a.seed):
-            generate_decks.write_case(a.out, name, text)
-            index.write(f"{name}\t{base}\t{check or 'issue 15 rules'}\t{desc}\n")
-
-
 if __name__ == "__main__":
-    main()
+    generate_decks.write_decks(__doc__, generate, COUNT, SEED,
+                               lambda c: f"{c[0]}\t{c[1]}\t{c[4] or 'issue 15 rules'}\t{c[2]}")
