@@ -217,9 +217,8 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
   if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));
   row.insert(row.end(), global.begin(), global.end());
   // Every rank holds the reduced row: all agree without a message, and nothing non-finite is written.
-  const std::vector<std::string> cols = historyColumns();
-  for (std::size_t k = 0; k < row.size(); ++k)
-    if (!std::isfinite(row[k])) throw nonFinite(cols[k], "history column", row[k]);
+  for (std::size_t k = 0; k < row.size(); ++k)  // the columns' names are built only for the message
+    if (!std::isfinite(row[k])) throw nonFinite(historyColumns()[k], "history column", row[k]);
   onRoot([&] { history_->writeRow(row); });
   if (exodus_) writeExodusStep(report.time, u, v, f);
 }
