@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "CorrespondenceKinematics.hpp"
+#include "SolidParameters.hpp"
 #include "core/InputError.hpp"
 #include "core/StressDamage.hpp"
 
@@ -84,7 +85,7 @@ void CorrespondenceMaterial::subtractThermalIncrement(const FamilyView& fam, con
 
 std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters() {
   using P = ParameterSpec;
-  return {
+  std::vector<ParameterSpec> params = {
       P::real("Density", "mass density [kg/m^3]").need().positive(),
       P::real("Bulk Modulus", "give exactly two of the four elastic constants").positive(),
       P::real("Shear Modulus").positive(),
@@ -98,6 +99,15 @@ std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters() {
               "linear thermal expansion coefficient alpha [1/K]: the thermal stretch (1 + alpha dT) I leaves the "
               "rate of deformation before the stress update (docs/thermal.md); reads the Temperature field"),
   };
+  for (ParameterSpec& p : heatParameters(true)) params.push_back(std::move(p));
+  return params;
+}
+
+std::vector<std::unique_ptr<FieldOperator>> CorrespondenceMaterial::heatTerms(const MaterialInput& in,
+                                                                             const std::string& model) {
+  double thickness = 0.0;
+  const Dimension dim = correspondenceDimension(in, model, &thickness);
+  return heatTermsOf(in, dim, thickness);
 }
 
 std::vector<std::string> CorrespondenceMaterial::commonOutputs() {

@@ -49,6 +49,8 @@ class CorrespondenceMaterial : public Material {
 
   // The parameters every correspondence model takes (the model's own ones are appended by the caller).
   static std::vector<ParameterSpec> commonParameters();
+  // Its terms on Temperature from those parameters (conduction, plastic heating: SolidParameters' heatTermsOf).
+  static std::vector<std::unique_ptr<FieldOperator>> heatTerms(const MaterialInput& in, const std::string& model);
   // Output names of the base fields: Unrotated_Cauchy_Stress{XX,YY,ZZ,XY,YZ,XZ}, Von_Mises_Stress,
   // Deformation_Gradient{XX,...,ZZ}, Stored_Elastic_Energy, Dissipated_Energy (J per node, computed only when
   // an output asks for them: Global_Strain_Energy, Global_Dissipated_Energy; docs/materials.md, "Energy").

@@ -21,12 +21,14 @@ MaterialEntry DiffusionMaterial::entry() {
                    P::real("Specific Heat Capacity", "c [J/(kg K)]; only for a transient solve").positive()},
                   [](const MaterialInput& in) { return std::unique_ptr<Material>(new DiffusionMaterial(in)); },
                   {}};
-  e.createOperator = [](const MaterialInput& in) {
+  e.createOperators = [](const MaterialInput& in) {
     if (in.flag("Use Improved Quadrature"))
       throw InputError(in.where() + ": 'Use Improved Quadrature' = true: Peridigm's improved-quadrature weights are "
                        "not available in Periforge");
     const double capacity = in.get("Density", 0.0) * in.get("Specific Heat Capacity", 0.0);
-    return std::unique_ptr<FieldOperator>(new HeatConduction(in.get("Coefficient"), capacity, Dimension::ThreeD, 0.0));
+    std::vector<std::unique_ptr<FieldOperator>> terms;
+    terms.push_back(std::unique_ptr<FieldOperator>(new HeatConduction(in.get("Coefficient"), capacity, Dimension::ThreeD, 0.0)));
+    return terms;
   };
   return e;
 }

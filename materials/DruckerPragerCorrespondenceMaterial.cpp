@@ -24,12 +24,14 @@ MaterialEntry DruckerPragerCorrespondenceMaterial::entry() {
   outputs.push_back("Equivalent_Plastic_Strain");
   outputs.push_back("Hardening_Parameter");
   outputs.push_back("Yield_Function");
-  return {"Drucker Prager Correspondence",
+  MaterialEntry e{"Drucker Prager Correspondence",
           "Drucker-Prager correspondence solid, hyperbolic hardening, non-associated flow (Li & Geng, Eqs. 38-48, "
           "A1-A18) with hourglass control",
           params,
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new DruckerPragerCorrespondenceMaterial(in)); },
           outputs};
+  e.createOperators = [](const MaterialInput& in) { return heatTerms(in, "Drucker Prager Correspondence"); };
+  return e;
 }
 
 std::vector<StateSpec> DruckerPragerCorrespondenceMaterial::modelStateSpecs() const {

@@ -6,12 +6,14 @@ ElasticCorrespondenceMaterial::ElasticCorrespondenceMaterial(const MaterialInput
     : CorrespondenceMaterial(in, "Elastic Correspondence") {}
 
 MaterialEntry ElasticCorrespondenceMaterial::entry() {
-  return {"Elastic Correspondence",
+  MaterialEntry e{"Elastic Correspondence",
           "hypoelastic correspondence (non-ordinary state-based) solid with hourglass control (Peridigm; Foster et "
           "al. 2010 kinematics)",
           commonParameters(),
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticCorrespondenceMaterial(in)); },
           commonOutputs()};
+  e.createOperators = [](const MaterialInput& in) { return heatTerms(in, "Elastic Correspondence"); };
+  return e;
 }
 
 void ElasticCorrespondenceMaterial::updateStress(const FamilyView&, StateStore&, const std::vector<Mat3>& tauN,

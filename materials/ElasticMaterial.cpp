@@ -22,10 +22,10 @@ MaterialEntry ElasticMaterial::entry() {
   MaterialEntry e{"Elastic", "linear ordinary state-based solid", withThermalExpansion(elasticSolidParameters()),
                   [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticMaterial(in)); },
                   {"Dilatation", "Stored_Elastic_Energy"}};
-  e.createOperator = [](const MaterialInput& in) {
+  e.createOperators = [](const MaterialInput& in) {
     double thickness = 0.0;
     const Dimension dim = dimensionFrom(in, &thickness);
-    return conductionOf(in, dim, thickness);
+    return heatTermsOf(in, dim, thickness);
   };
   return e;
 }

@@ -5,6 +5,7 @@
 #include "core/MaterialEntry.hpp"
 #include "ElasticModuli.hpp"
 #include "HeatConduction.hpp"
+#include "PlasticHeating.hpp"
 
 namespace pf {
 
@@ -59,12 +60,21 @@ std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> param
                                        "linear thermal expansion coefficient alpha [1/K]; the material then reads the "
                                        "Temperature field (docs/input.md, \"Temperature\"), relative to each point's "
                                        "start temperature"));
-  params.push_back(ParameterSpec::real("Thermal Conductivity",
-                                       "k [W/(m K)]: the block conducts heat (docs/thermal.md; bond rule normalised on "
-                                       "each point's family)").positive());
-  params.push_back(ParameterSpec::real("Specific Heat Capacity",
-                                       "c [J/(kg K)]: with Density the heat capacity of a transient thermal solve")
-                       .positive());
+  for (ParameterSpec& p : heatParameters(false)) params.push_back(std::move(p));
+  return params;
+}
+
+std::vector<ParameterSpec> heatParameters(bool plasticHeating) {
+  std::vector<ParameterSpec> params = {
+      ParameterSpec::real("Thermal Conductivity", "k [W/(m K)]: the block conducts heat (docs/thermal.md; bond rule "
+                                                  "normalised on each point's family)").positive(),
+      ParameterSpec::real("Specific Heat Capacity", "c [J/(kg K)]: with Density the heat capacity of a transient "
+                                                    "thermal solve").positive()};
+  if (plasticHeating)
+    params.push_back(ParameterSpec::real("Taylor-Quinney Coefficient",
+                                         "beta: the fraction of the plastic work (Dissipated_Energy) that heats the "
+                                         "point, when a solver advances Temperature (needs Specific Heat Capacity; "
+                                         "docs/thermal.md)").nonNegative().atMost(1.0));
   return params;
 }
 
@@ -73,6 +83,19 @@ std::unique_ptr<FieldOperator> conductionOf(const MaterialInput& in, Dimension d
   const double capacity = in.get("Density", 0.0) * in.get("Specific Heat Capacity", 0.0);
   return std::unique_ptr<FieldOperator>(new HeatConduction(in.get("Thermal Conductivity"), capacity, dim, thickness,
                                                            HeatConduction::Normalisation::Family));
+}
+
+std::vector<std::unique_ptr<FieldOperator>> heatTermsOf(const MaterialInput& in, Dimension dim, double thickness) {
+  std::vector<std::unique_ptr<FieldOperator>> terms;
+  if (auto k = conductionOf(in, dim, thickness)) terms.push_back(std::move(k));
+  if (in.has("Taylor-Quinney Coefficient")) {
+    if (!in.has("Specific Heat Capacity"))
+      throw InputError(in.where() + ": 'Taylor-Quinney Coefficient' needs 'Specific Heat Capacity' (the heat "
+                                    "capacity its plastic work heats)");
+    terms.push_back(std::unique_ptr<FieldOperator>(
+        new PlasticHeating(in.get("Taylor-Quinney Coefficient"), in.get("Density") * in.get("Specific Heat Capacity"))));
+  }
+  return terms;
 }
 
 double thermalExpansionOf(const MaterialInput& in, Dimension dim, const ElasticModuli& moduli) {

@@ -29,9 +29,15 @@ bool ignoredShearCorrection(const MaterialInput& in, const std::string& model);
 // The parameters plus Peridigm's "Thermal Expansion Coefficient" (for a model that honours it) and the conduction
 // parameters "Thermal Conductivity", "Specific Heat Capacity" (materials/HeatConduction.hpp).
 std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params);
+// "Thermal Conductivity", "Specific Heat Capacity" and, for a model that integrates its plastic work
+// (Dissipated_Energy), "Taylor-Quinney Coefficient" (materials/PlasticHeating.hpp).
+std::vector<ParameterSpec> heatParameters(bool plasticHeating);
 class FieldOperator;
 // The heat conduction of a solid with "Thermal Conductivity" (family normalisation), or null without it.
 std::unique_ptr<FieldOperator> conductionOf(const MaterialInput& in, Dimension dim, double thickness);
+// Its terms on Temperature: conduction (with "Thermal Conductivity") and plastic heating (with "Taylor-Quinney
+// Coefficient", which needs "Specific Heat Capacity"; InputError otherwise).
+std::vector<std::unique_ptr<FieldOperator>> heatTermsOf(const MaterialInput& in, Dimension dim, double thickness);
 struct ElasticModuli;
 // The coefficient a of the thermal extension a dT |xi| (materials/OsbThermalKernels.hpp) or of the thermal strain
 // a dT (correspondence): alpha in 3D and plane stress, (1 + nu) alpha in plane strain; 0 when not given.

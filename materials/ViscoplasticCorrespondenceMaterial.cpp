@@ -1,14 +1,43 @@
 #include "ViscoplasticCorrespondenceMaterial.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "core/InputError.hpp"
 
 namespace pf {
 
 ViscoplasticCorrespondenceMaterial::ViscoplasticCorrespondenceMaterial(const MaterialInput& in)
     : CorrespondenceMaterial(in, "Viscoplastic Correspondence"),
       law_{in.get("Yield Stress"), in.get("Strain Hardening Exponent"), in.get("Rate Sensitivity Exponent"),
-           in.get("Reference Plastic Strain"), in.get("Reference Plastic Strain Rate")} {}
+           in.get("Reference Plastic Strain"), in.get("Reference Plastic Strain Rate")} {
+  const char* names[] = {"Melting Temperature", "Reference Temperature", "Thermal Softening Exponent"};
+  int given = 0;
+  for (const char* n : names) given += in.has(n) ? 1 : 0;
+  if (given == 0) return;
+  if (given != 3)
+    throw InputError(in.where() + ": thermal softening needs all of 'Melting Temperature', 'Reference Temperature' "
+                                  "and 'Thermal Softening Exponent'");
+  softens_ = true;
+  melting_ = in.get("Melting Temperature");
+  roomTemperature_ = in.get("Reference Temperature");
+  softeningExponent_ = in.get("Thermal Softening Exponent");
+  if (!(melting_ > roomTemperature_))
+    throw InputError(in.where() + ": 'Melting Temperature' must exceed 'Reference Temperature'");
+}
+
+std::vector<std::string> ViscoplasticCorrespondenceMaterial::fieldsRead() const {
+  std::vector<std::string> f = CorrespondenceMaterial::fieldsRead();
+  if (softens_) f.push_back("Temperature");
+  return f;
+}
+
+double ViscoplasticCorrespondenceMaterial::softening(double T) const {
+  if (!softens_) return 1.0;
+  const double star = std::min(1.0, std::max(0.0, (T - roomTemperature_) / (melting_ - roomTemperature_)));
+  return 1.0 - std::pow(star, softeningExponent_);
+}
 
 MaterialEntry ViscoplasticCorrespondenceMaterial::entry() {
   using P = ParameterSpec;
@@ -18,14 +47,21 @@ MaterialEntry ViscoplasticCorrespondenceMaterial::entry() {
   params.push_back(P::real("Rate Sensitivity Exponent", "m of Eq. 58").need().positive());
   params.push_back(P::real("Reference Plastic Strain", "eps_0 of Eq. 59 (dimensionless)").need().positive());
   params.push_back(P::real("Reference Plastic Strain Rate", "rate_0 of Eq. 58 [1/s]").need().positive());
+  params.push_back(P::real("Melting Temperature", "T_m [K] of the thermal softening factor 1 - T*^q, "
+                                                  "T* = (T - T_r)/(T_m - T_r) (Johnson-Cook; reads Temperature)"));
+  params.push_back(P::real("Reference Temperature", "T_r [K]: the temperature of the fitted flow stress (no "
+                                                    "softening at or below it)"));
+  params.push_back(P::real("Thermal Softening Exponent", "q of the thermal softening factor").positive());
   std::vector<std::string> outputs = commonOutputs();
   outputs.push_back("Equivalent_Plastic_Strain");
   outputs.push_back("Equivalent_Plastic_Strain_Rate");
-  return {"Viscoplastic Correspondence",
+  MaterialEntry e{"Viscoplastic Correspondence",
           "rate-dependent J2 correspondence solid (Foster, Silling & Chen 2010, Eqs. 49-61) with hourglass control",
           params,
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new ViscoplasticCorrespondenceMaterial(in)); },
           outputs};
+  e.createOperators = [](const MaterialInput& in) { return heatTerms(in, "Viscoplastic Correspondence"); };
+  return e;
 }
 
 std::vector<StateSpec> ViscoplasticCorrespondenceMaterial::modelStateSpecs() const {
@@ -46,10 +82,13 @@ void ViscoplasticCorrespondenceMaterial::updateStress(const FamilyView& fam, Sta
   double* eps = state.trial("Equivalent_Plastic_Strain");
   double* rate = state.trial("Equivalent_Plastic_Strain_Rate");
   double* time = state.trial("Viscoplastic_Time");
+  const double* T = softens_ ? fam.fields->find("Temperature") : nullptr;  // per overlap node, owned first
+  FosterLaw law = law_;
   for (std::size_t k = 0; k < tau.size(); ++k) {
     const int i = fam.begin + static_cast<int>(k);
     const double dt = fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
-    const FosterStep s = fosterUpdate(law_, moduli().bulk, moduli().shear, tauN[k], epsN[i], de[k], dt);
+    if (T) law.yield = law_.yield * softening(T[i]);
+    const FosterStep s = fosterUpdate(law, moduli().bulk, moduli().shear, tauN[k], epsN[i], de[k], dt);
     tau[k] = s.tau, eps[i] = s.epsP, time[i] = fam.time;
     rate[i] = dt > 0.0 ? s.rate : rateN[i];
   }

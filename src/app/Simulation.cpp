@@ -145,7 +145,7 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
   std::unique_ptr<RestartPoint> from;
   if (!restartFile.empty()) from = std::make_unique<RestartPoint>(restartFrom(restartFile, deck, problem, u, v, restart));
   for (std::size_t k = 0; k < solvers.size(); ++k) {
-    if (findSolver(deck.solvers[k].type)->solves == "Displacement" && !model.hasForceModel())
+    if (solvers[k]->advances("Displacement") && !model.hasForceModel())
       throw InputError(inputFile + ": " + deck.solvers[k].listName + ": solver '" + deck.solvers[k].type +
                        "' advances the displacement, but no block has a force model (Diffusion blocks only conduct heat)");
     solvers[k]->check(model);

@@ -24,9 +24,10 @@ struct MaterialEntry {
   // Node fields the model can write (the output StateSpecs of its stateSpecs() for some input): the
   // names "Output Variables" and probes may ask for besides the core's own.
   std::vector<std::string> outputs;
-  // The operator this entry puts on a field beside the displacement (heat conduction), for the given input; null
-  // function or null result: none. A block's material and operator come from the same "Materials" entry.
-  std::function<std::unique_ptr<FieldOperator>(const MaterialInput&)> createOperator = nullptr;
+  // The terms this entry puts on fields beside the displacement (heat conduction, plastic heating), for the given
+  // input; null function or empty result: none. A block's material and operators come from the same "Materials"
+  // entry.
+  std::function<std::vector<std::unique_ptr<FieldOperator>>(const MaterialInput&)> createOperators = nullptr;
 };
 
 const std::vector<MaterialEntry>& materialRegistry();   // defined in materials/MaterialRegistry.cpp

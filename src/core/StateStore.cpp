@@ -36,6 +36,7 @@ const StateStore::Field& StateStore::field(const std::string& name) const {
 }
 
 double* StateStore::trial(const std::string& name) { return field(name).trial.data(); }
+const double* StateStore::trial(const std::string& name) const { return field(name).trial.data(); }
 
 const double* StateStore::committed(const std::string& name) const {
   const Field& f = field(name);

@@ -26,6 +26,7 @@ class StateStore {
 
   bool has(const std::string& name) const { return fields_.count(name) != 0; }
   double* trial(const std::string& name);                 // the value being computed (n+1)
+  const double* trial(const std::string& name) const;
   const double* committed(const std::string& name) const; // value at the last converged step (n)
   const StateSpec& spec(const std::string& name) const;
   std::vector<StateSpec> specs() const;

@@ -123,6 +123,7 @@ struct SolverSpec {
   ParamTree passThrough;              // sub-lists handed over unread (NOX's own options)
   std::vector<double> times;          // start time, then the end of every load step (Verlet: start, end)
   bool verbose = false;
+  std::vector<std::string> fields;    // the fields it advances ("Displacement", "Temperature")
 };
 
 struct ProbeSpec {

@@ -71,27 +71,37 @@ std::vector<ParameterSpec> solverListSpecs() {
               .oneOf({"Full Tangent", "Block 3x3", "None"}),
           S::flag("Initialize Predictor From Previous Solver",
                   "Peridigm's; accepted: each solver starts from the previous one's end state either way"),
-          S::flag("Solve For Displacement", "Peridigm's: whether the solver advances the displacement; must agree "
-                                            "with the solver (true for all but ImplicitDiffusion)"),
-          S::flag("Solve For Temperature", "Peridigm's: whether the solver advances the Temperature field; true for "
-                                           "ImplicitDiffusion only"),
+          S::flag("Solve For Displacement", "Peridigm's: whether the solver advances the displacement; true for all "
+                                            "but ImplicitDiffusion (Verlet: false for a thermal-only run)"),
+          S::flag("Solve For Temperature", "Peridigm's: whether the solver advances the Temperature field: "
+                                           "ImplicitDiffusion always, Verlet when true (explicit conduction and "
+                                           "heating, sub-cycled; docs/thermal.md)"),
           S::flag("Solve For Pressure", "Peridigm's fluid-pressure field: not available (true is an input error)")};
 }
 
-// Peridigm's "Solve For ..." flags name the fields a solver advances: they must agree with what the solver does.
-void requireSolvedFields(const ParameterValues& list, const SolverEntry& entry, const std::string& file,
-                         const std::string& path) {
+// Peridigm's "Solve For ..." flags name the fields a solver advances: they must agree with what the solver can do.
+// Returns the fields it advances: its own unless `Solve For <own>` = false, and those of mayAlsoSolve set true.
+std::vector<std::string> solvedFields(const ParameterValues& list, const SolverEntry& entry, const std::string& file,
+                                      const std::string& path) {
   if (list.has("Solve For Pressure") && list.flag("Solve For Pressure")) fail(file, path, "'Solve For Pressure' = true: Peridigm's fluid-pressure field is not available");
+  std::vector<std::string> fields;
   for (const std::string field : {"Displacement", "Temperature"}) {
     const std::string flag = "Solve For " + field;
-    if (!list.has(flag)) continue;
-    const bool solves = entry.solves == field;
-    if (list.flag(flag) != solves)
-      fail(file, path, "'" + flag + "' = " + (solves ? "false" : "true") + " but solver '" + entry.name + "' " +
-                           (solves ? "advances" : "does not advance") + " the " + field +
-                           (field == "Temperature" && !solves ? " (ImplicitDiffusion does; a coupled heat solve in the "
-                                                                "mechanics solvers is not available yet)" : ""));
+    const bool own = entry.solves == field;
+    bool optional = false;
+    for (const std::string& f : entry.mayAlsoSolve) optional = optional || f == field;
+    const bool wanted = list.has(flag) ? list.flag(flag) : own;
+    if (wanted && !own && !optional)
+      fail(file, path, "'" + flag + "' = true but solver '" + entry.name + "' does not advance the " + field +
+                           (field == "Temperature" ? " (ImplicitDiffusion and Verlet do)" : ""));
+    if (!wanted && own && entry.mayAlsoSolve.empty())
+      fail(file, path, "'" + flag + "' = false but solver '" + entry.name + "' advances the " + field);
+    if (wanted) fields.push_back(field);
   }
+  if (fields.empty())
+    fail(file, path, "solver '" + entry.name + "' advances no field: set 'Solve For Displacement' or 'Solve For "
+                     "Temperature' to true");
+  return fields;
 }
 
 SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& path) {
@@ -113,7 +123,7 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
     if (s.isSublist(e.name)) spec.type = e.name;
   const SolverEntry& entry = *findSolver(spec.type);
   const std::string sp = path + "/" + spec.type;
-  requireSolvedFields(list, entry, file, path);
+  spec.fields = solvedFields(list, entry, file, path);
   const PL& sub = s.sublist(spec.type);
   spec.options = readList(sub, entry.parameters, entry.passThrough, file, sp);
   for (const std::string& n : entry.passThrough)

@@ -101,6 +101,11 @@ void FieldSet::impose(double t, const std::vector<double>& x, StateStore& state,
   }
 }
 
+void FieldSet::afterCommit(StateStore& state) const {
+  for (const Field& f : fields_)
+    if (f.solved) std::copy(state.committed(f.name), state.committed(f.name) + f.mask.size(), state.trial(f.name));
+}
+
 std::vector<std::string> FieldSet::outputs() const {
   std::vector<std::string> out;
   for (const Field& f : fields_) {

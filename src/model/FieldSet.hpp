@@ -28,10 +28,15 @@ class FieldSet {
   // The field's rate from its operators (core/FieldOperator.hpp) as the node output `rate` (Flux_Divergence),
   // written by whoever evaluates it at a reported state (FieldSet itself never does).
   void addRate(const std::string& name, const std::string& rate, StateStore& state, int numOwned, std::size_t numBonds);
+  // The rate output's name of the field (addRate), or empty.
+  const std::string& rateName(const std::string& name) const { return get(name).rate; }
   void addInitial(const std::string& name, NodalLoad load);
   void addPrescribed(const std::string& name, NodalLoad load);
   // A solver advances the field: impose() keeps its trial values except at prescribed nodes.
   void setSolved(const std::string& name) { get(name).solved = true; }
+  // After StateStore::commit (whose trial copies are then stale): a solved field's trial values = its committed ones,
+  // where its solver's next step starts.
+  void afterCommit(StateStore& state) const;
   // Per owned node: 1 where some prescribed condition of the field acts.
   const std::vector<char>& prescribedMask(const std::string& name) const { return get(name).mask; }
   const std::vector<NodalLoad>& prescribed(const std::string& name) const { return get(name).prescribed; }

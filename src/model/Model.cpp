@@ -45,6 +45,10 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
     for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);
   }
+  // A field term's source reads material outputs that are computed only when asked for (plastic work).
+  for (const BlockModel& b : blocks_)
+    for (const auto& op : b.fieldOperators)
+      for (const std::string& name : op->materialOutputsRead()) b.material->enableOutput(name);
   for (const BlockModel& b : blocks_) hasDamage_ = hasDamage_ || b.damaged();
   if (hasDamage_) {
     specs.push_back({"Bond_Damage", Location::Bond, true, false});
@@ -145,6 +149,7 @@ bool Model::wantsPositions() const {
 
 void Model::commit() {
   state_.commit();
+  if (!fields_.empty()) fields_.afterCommit(state_);
   if (wantsPositions() && !yEvaluated_.empty()) yCommitted_ = yEvaluated_;
 }
 
@@ -188,34 +193,6 @@ void Model::requireFieldsRead(const std::string& inputFile) const {
                            "' boundary condition");
       }
   });
-}
-
-void Model::fieldRate(const std::string& field, const double* owned, double* rate) {
-  fieldOverlap_.resize(static_cast<std::size_t>(layout_->numOverlap()));
-  layout_->importToOverlap(owned, fieldOverlap_.data(), 1);
-  std::fill(rate, rate + numOwned(), 0.0);
-  for (const BlockModel& b : blocks_)
-    if (b.fieldOperator && b.fieldOperator->field() == field) b.fieldOperator->apply(view(b), fieldOverlap_.data(), rate);
-}
-
-void Model::fieldDiagonal(const std::string& field, double* diag) const {
-  std::fill(diag, diag + numOwned(), 0.0);
-  for (const BlockModel& b : blocks_)
-    if (b.fieldOperator && b.fieldOperator->field() == field) b.fieldOperator->diagonal(blockView(b), diag);
-}
-
-void Model::fieldCapacity(const std::string& field, double* capacity) const {
-  std::fill(capacity, capacity + numOwned(), 0.0);
-  for (const BlockModel& b : blocks_)
-    if (b.fieldOperator && b.fieldOperator->field() == field)
-      for (int i = b.begin; i < b.end; ++i) capacity[i] = b.fieldOperator->capacity();
-}
-
-bool Model::hasOperator(const std::string& field) const {
-  double mine = 0.0;
-  for (const BlockModel& b : blocks_)
-    if (b.fieldOperator && b.fieldOperator->field() == field) mine = 1.0;
-  return max(mine) > 0.0;
 }
 
 bool Model::hasForceModel() const {

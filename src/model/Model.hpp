@@ -31,7 +31,7 @@ struct BlockModel {
   double criticalStretch = 0.0;  // the block's Critical Stretch damage model; 0: no damage model (nothing breaks)
   bool surfaceBand = false;      // Surface Correction = NDO Band (model/SurfaceBand.hpp)
   double tensileStrength = 0.0;  // the block's Maximum Principal Stress damage model (f_t); 0: not that model
-  std::shared_ptr<const FieldOperator> fieldOperator = nullptr;  // its operator on a field (heat conduction), or null
+  std::vector<std::shared_ptr<const FieldOperator>> fieldOperators = {};  // its terms on fields (conduction, heating)
   bool damaged() const { return criticalStretch > 0.0 || tensileStrength > 0.0; }
 };
 
@@ -158,9 +158,15 @@ class Model {
   // any rank has one (collective).
   void fieldRate(const std::string& field, const double* owned, double* rate);
   void fieldDiagonal(const std::string& field, double* diag) const;
-  // Per owned node: the capacity per volume (rho c) of its block's operator on `field`, 0 where it has none.
+  // Per owned node: the capacity per volume (rho c) of its block's terms on `field`, 0 where it has none.
   void fieldCapacity(const std::string& field, double* capacity) const;
+  // Per owned node: the blocks' sources on `field` (W/m^3 for Temperature) over the last evaluated step of length dt
+  // (the trial state less the committed one: call between internalForce and commit).
+  void fieldSource(const std::string& field, double dt, double* source) const;
+  // Collective: whether some block has a linear operator (conduction) / a source (plastic heating) / any term on it.
   bool hasOperator(const std::string& field) const;
+  bool hasFieldSource(const std::string& field) const;
+  bool hasFieldTerms(const std::string& field) const;
   // Whether any block on any rank has a force model (Material::hasForceModel); collective.
   bool hasForceModel() const;
 

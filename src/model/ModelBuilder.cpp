@@ -24,7 +24,7 @@ struct BlockSpec {
   std::string name, materialName;
   double horizon;
   std::shared_ptr<const Material> material;
-  std::shared_ptr<const FieldOperator> fieldOperator;
+  std::vector<std::shared_ptr<const FieldOperator>> fieldOperators;
   double criticalStretch = 0.0;  // 0: no damage model
   bool ndoBand = false;
   double tensileStrength = 0.0;  // Maximum Principal Stress damage; 0: not that model
@@ -35,12 +35,13 @@ struct BlockSpec {
 std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloudBlocks) {
   std::map<int, BlockSpec> blocks;
   std::map<std::string, std::shared_ptr<const Material>> built;
-  std::map<std::string, std::shared_ptr<const FieldOperator>> operators;
+  std::map<std::string, std::vector<std::shared_ptr<const FieldOperator>>> operators;
   auto materialOf = [&](const std::string& name) {
     if (!built.count(name)) {
       const MaterialSpec& m = deck.material(name);
       built[name] = m.entry->create(m.values);
-      if (m.entry->createOperator) operators[name] = m.entry->createOperator(m.values);
+      if (m.entry->createOperators)
+        for (auto& op : m.entry->createOperators(m.values)) operators[name].push_back(std::move(op));
     }
     return built[name];
   };
@@ -70,9 +71,9 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Surface Correction' = 'NDO Band': material '" +
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") has no first Piola stress; the band works with the correspondence models");
-    BlockSpec spec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material), nullptr,
+    BlockSpec spec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material), {},
                    d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
-    if (operators.count(g.material)) spec.fieldOperator = operators[g.material];
+    if (operators.count(g.material)) spec.fieldOperators = operators[g.material];
     return spec;
   };
   for (const BlockGroupSpec& g : deck.blocks)
@@ -304,7 +305,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
     const BlockSpec& s = blocks.at(r.blockId);
     blockModels.push_back(
         BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
-                   s.ndoBand, s.tensileStrength, s.fieldOperator});
+                   s.ndoBand, s.tensileStrength, s.fieldOperators});
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;
@@ -317,8 +318,9 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   reduce.sum = [&](double v) { return comm.sum(v); };
   reduce.max = [&](double v) { return comm.max(v); };
   pb.nodeSets = resolveNodeSets(deck.nodeSets, owned, inputFile, reduce);
-  // A block with heat conduction gives the model its Temperature field and that field's rate output.
-  if (pb.model->hasOperator("Temperature")) {
+  // A block with a term on Temperature (conduction, heat capacity, plastic heating) gives the model its Temperature
+  // field and that field's rate output.
+  if (pb.model->hasFieldTerms("Temperature")) {
     pb.model->addField("Temperature");
     pb.model->fields().addRate("Temperature", "Flux_Divergence", pb.model->state(), pb.model->numOwned(),
                                pb.model->layout().family().numBonds());

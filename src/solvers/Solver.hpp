@@ -71,6 +71,13 @@ class Solver {
                    StepObserver& observer) = 0;
   // The next run() continues after resume.step instead of starting at times.front(): u, v and the model's
   // committed state are those of that step (a restart), nothing up to it is reported again.
+  // The fields this run advances (the deck's `Solve For` flags, SolverSpec::fields); set before run().
+  void setFields(std::vector<std::string> fields) { fields_ = std::move(fields); }
+  bool advances(const std::string& field) const {
+    for (const std::string& f : fields_)
+      if (f == field) return true;
+    return false;
+  }
   void resumeAfter(SolverResume resume) {
     resume_ = std::move(resume);
     resuming_ = true;
@@ -87,6 +94,7 @@ class Solver {
  private:
   SolverResume resume_;
   bool resuming_ = false;
+  std::vector<std::string> fields_;
 };
 
 }  // namespace pf

@@ -5,7 +5,9 @@
 namespace pf {
 
 std::unique_ptr<Solver> makeSolver(const SolverSpec& spec) {
-  return findSolver(spec.type)->create(spec.options, spec.passThrough);  // the input layer checked the name
+  std::unique_ptr<Solver> solver = findSolver(spec.type)->create(spec.options, spec.passThrough);  // name checked
+  solver->setFields(spec.fields);
+  return solver;
 }
 
 }  // namespace pf

@@ -3,9 +3,11 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <cstdio>
 #include <ctime>
 
+#include "ExplicitFieldStep.hpp"
 #include "FiniteCheck.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
@@ -19,6 +21,7 @@ SolverEntry VerletSolver::entry() {
   e.name = "Verlet";
   e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
   e.dynamic = true;
+  e.mayAlsoSolve = {"Temperature"};
   e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate; above that estimate "
                                       "a warning, above 2 × it an input error").positive(),
                   S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ); above 1 a warning, above 2 "
@@ -81,11 +84,19 @@ double VerletSolver::stableTimeStep(const Model& model, bool freeOnly) {
   return w2 > 0 ? 2.0 / std::sqrt(w2) : 1.0;
 }
 
-double VerletSolver::timeStep(const Model& model) const {
-  return opt_.fixedDt > 0 ? opt_.fixedDt : opt_.safetyFactor * stableTimeStep(model);
+double VerletSolver::timeStep(const Model& model, const ExplicitFieldStep* heat) const {
+  if (opt_.fixedDt > 0) return opt_.fixedDt;
+  // A coupled run steps at the mechanics' pace and sub-cycles the field; a thermal-only one at the field's.
+  return opt_.safetyFactor * (advances("Displacement") ? stableTimeStep(model) : heat->stableStep());
 }
 
 void VerletSolver::check(const Model& model) const {
+  if (advances("Temperature")) {
+    const ExplicitFieldStep heat(model, "Temperature", opt_.where);  // throws InputError for a field it cannot step
+    if (!advances("Displacement") && opt_.fixedDt <= 0 && std::isinf(heat.stableStep()))
+      throw InputError(opt_.where + ": a thermal-only run without conduction has no stable step: give 'Fixed dt'");
+  }
+  if (!advances("Displacement")) return;  // no mechanics: only the thermal step bounds dt
   if (opt_.fixedDt <= 0) {
     // The default step is Safety Factor x the estimate: bounded as a Fixed dt is (a factor of 1e300 would step
     // over the whole interval at once and end "done" with a blown-up state).
@@ -112,13 +123,34 @@ void VerletSolver::check(const Model& model) const {
   if (opt_.fixedDt > stable) warn(opt_.where + ": " + msg + "; the run may go unstable");
 }
 
+// The step's end state at t: the force at u (mechanics) or only the conditions of t, then the field advanced over
+// dt (0: the start, nothing to advance), then the commit.
+void VerletSolver::evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt,
+                            std::vector<double>& u, std::vector<double>& f) const {
+  const CheckPoint at{"Verlet", step, t};
+  if (advances("Displacement"))
+    atStep(at, [&] { model.internalForce(u.data(), f.data()); });
+  else
+    model.updateFields();
+  if (heat && dt > 0.0) atStep(at, [&] { heat->advance(model, dt); });
+  model.commit();  // an explicit step is complete once its force (and field) is evaluated
+}
+
+std::unique_ptr<ExplicitFieldStep> VerletSolver::heatStep(Model& model) const {
+  if (!advances("Temperature")) return nullptr;
+  model.fields().setSolved("Temperature");
+  return std::make_unique<ExplicitFieldStep>(model, "Temperature", opt_.where);
+}
+
 void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                        const std::vector<double>& times, StepObserver& observer) {
   const SolverResume* resume = takeResume();
   const double t0 = times.front(), t1 = times.back();
   using Clock = std::chrono::steady_clock;
   const int n = model.numDofs();
-  double dt = timeStep(model);
+  const bool mechanics = advances("Displacement");
+  std::unique_ptr<ExplicitFieldStep> heat = heatStep(model);
+  double dt = timeStep(model, heat.get());
   long steps = std::max(1L, static_cast<long>(std::ceil((t1 - t0) / dt - 1e-9)));
   if (opt_.fixedDt <= 0) dt = (t1 - t0) / steps;  // land exactly on t1
   if (resume) {  // the interrupted run's step (its stable-step estimate may differ in the last bit at another np)
@@ -127,6 +159,9 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   }
   const bool root = model.layout().rank() == 0;
   if (root) std::printf("Verlet: dt = %.6g s, %ld steps\n", dt, steps);
+  if (root && heat)
+    std::printf("Verlet: Temperature by %ld explicit sub-step(s) per step (stable step %.6g s)\n", heat->subSteps(dt),
+                heat->stableStep());
 
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double>& rho = model.density();
@@ -138,11 +173,10 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.bodyForce(resume->time, b.data());
   } else {
     model.applyPrescribed(t0, u.data());
-    atStep(CheckPoint{"Verlet", 0, t0}, [&] { model.internalForce(u.data(), f.data()); });
-    model.commit();
+    evaluate(model, heat.get(), 0, t0, 0.0, u, f);
     model.bodyForce(t0, b.data());
   }
-  acceleration(model, f, b, a);
+  if (mechanics) acceleration(model, f, b, a);  // a thermal-only run leaves u and v alone
   if (!resume) {
     requireFiniteState(model, CheckPoint{"Verlet", 0, t0}, u, v, f,
                        finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
@@ -165,12 +199,11 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) / dt;
-    forceTime.time([&] { atStep(CheckPoint{"Verlet", s, t}, [&] { model.internalForce(u.data(), f.data()); }); });
-    model.commit();  // an explicit step is complete once its force is evaluated
-    if (model.hasBodyForce()) model.bodyForce(t, b.data());
+    forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, u, f); });
+    if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
     for (int k = 0; k < n; ++k) {
-      a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / rho[k / 3];
+      a[k] = fixed[k] || !mechanics ? 0.0 : (f[k] + b[k]) / rho[k / 3];
       if (!fixed[k]) v[k] += 0.5 * dt * a[k];
       probe += u[k] + v[k] + f[k];
     }
@@ -185,6 +218,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     std::printf("Verlet: force evaluations %.3f s wall, %.3f s CPU (rank 0) of %.3f s wall, %.3f s CPU stepping\n",
                 forceTime.wall, forceTime.cpu, std::chrono::duration<double>(Clock::now() - runStart).count(),
                 threadCpuSeconds() - runCpu0);
+  if (root && heat) std::printf("Verlet: Temperature sub-steps %ld\n", heat->subStepsTaken());
 }
 
 }  // namespace pf

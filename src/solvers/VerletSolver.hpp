@@ -2,11 +2,17 @@
 // Explicit velocity-Verlet (central difference) time integration with the lumped density. The time
 // step is "Fixed dt" or Safety Factor x the Gershgorin bound 2/sqrt(max_i bound_i/rho_i). check(): a Fixed dt
 // above the bound warns, above kRefuseFactor x the bound is an input error unless Allow Unstable Time Step; a
-// non-finite displacement, velocity or force stops the run (SolverFailure) before the step is reported.
+// non-finite displacement, velocity or force stops the run (SolverFailure) before the step is reported. With
+// `Solve For Temperature` the field takes explicit sub-steps after each force evaluation (ExplicitFieldStep), with
+// `Solve For Displacement` false only those (a thermal-only run).
+#include <memory>
+
 #include "Solver.hpp"
 #include "core/SolverEntry.hpp"
 
 namespace pf {
+
+class ExplicitFieldStep;
 
 struct VerletOptions {
   double fixedDt = 0.0;       // > 0: use this dt
@@ -32,7 +38,12 @@ class VerletSolver : public Solver {
   static constexpr double kRefuseFactor = 2.0;
 
  private:
-  double timeStep(const Model& model) const;  // Fixed dt, or Safety Factor x the stable step
+  // Fixed dt, or Safety Factor x the stable step (the mechanics', or the field's in a thermal-only run).
+  double timeStep(const Model& model, const ExplicitFieldStep* heat) const;
+  // The Temperature field's explicit step when the deck has Verlet advance it (the field then marked solved), or null.
+  std::unique_ptr<ExplicitFieldStep> heatStep(Model& model) const;
+  void evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt, std::vector<double>& u,
+                std::vector<double>& f) const;
   VerletOptions opt_;
 };
 

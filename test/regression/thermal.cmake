@@ -25,3 +25,29 @@ foreach(np 1 2)
       ${PY} ${REG}/thermal/check_transient.py ${dim} ${CMAKE_CURRENT_BINARY_DIR}/regression/${name}/transient_${dim}.e)
   endforeach()
 endforeach()
+# Explicit conduction (Verlet with Solve For Temperature, thermal only: Solve For Displacement false; Fixed dt 1.1
+# times the field's stable step, so 2 sub-steps per step) against the same Fourier mode, np 1 and 2.
+foreach(np 1 2)
+  foreach(dim 3d plane_stress plane_strain)
+    set(name thermal_transient_explicit_${dim}_np${np})
+    periforge_run(${name} ${REG}/thermal/transient_explicit_${dim}.xml ${np})
+    periforge_check(${name}_check ${name}
+      ${PY} ${REG}/thermal/check_transient.py ${dim} ${CMAKE_CURRENT_BINARY_DIR}/regression/${name}/transient_explicit_${dim}.e)
+  endforeach()
+endforeach()
+# Plastic heating in the Taylor bar (Viscoplastic Correspondence, Taylor-Quinney 0.9): adiabatic, heat = beta W_p to
+# 1e-6 at np 1 and 2 and the two runs alike; with conduction sub-cycled in each Verlet step, the energy balance.
+foreach(np 1 2)
+  periforge_run(thermal_taylor_adiabatic_np${np} ${REG}/thermal/taylor_adiabatic.xml ${np})
+  periforge_check(thermal_taylor_adiabatic_np${np}_check thermal_taylor_adiabatic_np${np}
+    ${PY} ${REG}/thermal/check_heating.py adiabatic
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_adiabatic_np${np}/taylor_adiabatic.e)
+endforeach()
+periforge_check(thermal_taylor_adiabatic_np1_vs_np2 "thermal_taylor_adiabatic_np1;thermal_taylor_adiabatic_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_adiabatic_np2/taylor_adiabatic.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_adiabatic_np1/taylor_adiabatic.e ${REG}/thermal/np_agreement.comp)
+periforge_run(thermal_taylor_conducting_np2 ${REG}/thermal/taylor_conducting.xml 2)
+periforge_check(thermal_taylor_conducting_np2_check thermal_taylor_conducting_np2
+  ${PY} ${REG}/thermal/check_heating.py conducting
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_conducting_np2/taylor_conducting.e)
