@@ -1,6 +1,8 @@
 #include "HeatConduction.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace pf {
 
@@ -12,38 +14,50 @@ double HeatConduction::microconductivity(double delta) const {
   return isPlanar(dim_) ? 6.0 * k_ / (M_PI * thickness_ * d2 * delta) : 6.0 * k_ / (M_PI * d2 * d2);
 }
 
-// c of node i from the family sum S_i = sum_j |xi| V_j (unused by the analytic normalisation).
-double HeatConduction::nodeConstant(const FamilyView& fam, double familySum) const {
-  if (norm_ == Normalisation::Analytic) return microconductivity(fam.horizon);
-  return familySum > 0.0 ? (isPlanar(dim_) ? 4.0 : 6.0) * k_ / familySum : 0.0;
+namespace {
+const char* const kFamilySum = "Conduction_Family_Sum";
+}
+
+std::string HeatConduction::nodeValueName() const { return norm_ == Normalisation::Family ? kFamilySum : ""; }
+
+void HeatConduction::nodeValue(const FamilyView& fam, double* owned) const {
+  for (int i = fam.begin; i < fam.end; ++i) {
+    double S = 0.0;  // broken bonds too: the normaliser is the family's geometry
+    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b)
+      S += fam.refLength[b] * fam.volume[fam.neighbors[b]] * (fam.fraction ? fam.fraction[b] : 1.0);
+    owned[i] = S;
+  }
+}
+
+const double* HeatConduction::familySums(const FamilyView& fam) const {
+  if (norm_ == Normalisation::Analytic) return nullptr;
+  const double* S = fam.fields ? fam.fields->find(kFamilySum) : nullptr;
+  if (!S) throw std::logic_error("HeatConduction: the model did not provide " + std::string(kFamilySum));
+  return S;
+}
+
+template <class Term>
+double HeatConduction::bondSum(const FamilyView& fam, const double* S, int i, Term term) const {
+  const double C = 2.0 * (isPlanar(dim_) ? 4.0 : 6.0) * k_;
+  const double analytic = S ? 0.0 : microconductivity(fam.horizon);
+  double sum = 0.0;
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    if (fam.brokenN && fam.brokenN[b] != 0.0) continue;  // a broken bond conducts no heat
+    const int j = fam.neighbors[b];
+    const double c = S ? C / (S[i] + S[j]) : analytic;
+    sum += c * term(j) / fam.refLength[b] * fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
+  }
+  return sum;
 }
 
 void HeatConduction::apply(const FamilyView& fam, const double* u, double* out) const {
-  for (int i = fam.begin; i < fam.end; ++i) {
-    double sum = 0.0, familySum = 0.0;
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-      const int j = fam.neighbors[b];
-      const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
-      familySum += fam.refLength[b] * fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);  // broken bonds too
-      if (fam.brokenN && fam.brokenN[b] != 0.0) continue;  // a broken bond conducts no heat
-      sum += (u[j] - u[i]) / fam.refLength[b] * vj;
-    }
-    out[i] += nodeConstant(fam, familySum) * sum;
-  }
+  const double* S = familySums(fam);
+  for (int i = fam.begin; i < fam.end; ++i) out[i] += bondSum(fam, S, i, [&](int j) { return u[j] - u[i]; });
 }
 
 void HeatConduction::diagonal(const FamilyView& fam, double* diag) const {
-  for (int i = fam.begin; i < fam.end; ++i) {
-    double sum = 0.0, familySum = 0.0;
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-      const int j = fam.neighbors[b];
-      familySum += fam.refLength[b] * fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
-      const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
-      if (fam.brokenN && fam.brokenN[b] != 0.0) continue;
-      sum += vj / fam.refLength[b];
-    }
-    diag[i] += nodeConstant(fam, familySum) * sum;
-  }
+  const double* S = familySums(fam);
+  for (int i = fam.begin; i < fam.end; ++i) diag[i] += bondSum(fam, S, i, [](int) { return 1.0; });
 }
 
 }  // namespace pf

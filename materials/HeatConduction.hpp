@@ -5,10 +5,11 @@
 // expansion of T: sum over the ball of (xi . grad)^2 T / (2 |xi|) = pi delta^4 lap T / 6 in 3D, pi H delta^3 lap T / 6
 // in 2D). Neighbours count with their partial volume where the discretization has one. Gather form: each owned
 // node sums its own family (so a family cut by the surface conducts less: the surface effect, docs/thermal.md).
-// Family normalisation (Periforge's `Thermal Conductivity`): c_i = 6 k / S_i in 3D, 4 k / S_i in 2D, with
-// S_i = sum_j |xi| V_j over i's own family: the same limit, but exact for a whole family on any lattice (the sum
-// replaces the integral pi delta^4, which a lattice at delta = 3 dx misses by 10 %), and a family cut by a surface
-// parallel to the gradient conducts as a whole one.
+// Family normalisation (Periforge's `Thermal Conductivity`): the bond constant c_ij = 2 C k / (S_i + S_j), C = 6 in 3D
+// and 4 in 2D, with S_i = sum_j |xi| V_j over i's own family (FieldOperator::nodeValue, ghosted by the model): the same
+// limit, exact for a whole family on any lattice (the sum replaces the integral pi delta^4, which a lattice at
+// delta = 3 dx misses by 10 %), and symmetric in i and j, so the bonds conserve heat (sum_i V_i h_i = 0) where two
+// families differ, as at a surface (a per-node c_i = C k / S_i there lost half of a Heat Flux's heat in a bar).
 #include "core/Dimension.hpp"
 #include "core/FieldOperator.hpp"
 
@@ -23,6 +24,8 @@ class HeatConduction : public FieldOperator {
   void apply(const FamilyView& fam, const double* u, double* out) const override;
   void diagonal(const FamilyView& fam, double* diag) const override;
   double capacity() const override { return capacity_; }
+  std::string nodeValueName() const override;
+  void nodeValue(const FamilyView& fam, double* owned) const override;
   // c of the bond rule above for a block of horizon delta.
   double microconductivity(double delta) const;
 
@@ -30,8 +33,10 @@ class HeatConduction : public FieldOperator {
   double k_, capacity_, thickness_;
   Dimension dim_;
   Normalisation norm_;
-  // c for a node whose family sum of |xi| V_j is familySum: analytic (the sum unused) or family-normalised.
-  double nodeConstant(const FamilyView& fam, double familySum) const;
+  // The bond constants' sum over i's intact bonds of c_ij V_j / |xi| weighting (u_j - u_i) (apply) or 1 (diagonal).
+  template <class Term>
+  double bondSum(const FamilyView& fam, const double* S, int i, Term term) const;
+  const double* familySums(const FamilyView& fam) const;
 };
 
 }  // namespace pf

@@ -25,6 +25,12 @@ class FieldOperator {
   // diag[i] += |dL(u)_i / du_i| (the sum of its bonds' coefficients): the Jacobi preconditioner of an implicit
   // solve and, over the capacity, the explicit stable step.
   virtual void diagonal(const FamilyView&, double*) const {}
+  // A per-node value of its own, from the node's family, that its bonds need at both ends (the family-normalised
+  // conduction's family sum, for a bond constant symmetric in i and j): its name ("" = none) and its values for the
+  // owned nodes. The model computes it once, ghosts it and hands it to apply and diagonal in FamilyView::fields under
+  // that name.
+  virtual std::string nodeValueName() const { return ""; }
+  virtual void nodeValue(const FamilyView&, double* /*owned*/) const {}
   // The field's capacity per volume (rho c, J/(m^3 K)) for a transient solve; 0: the operator has none (Peridigm's
   // Diffusion, steady solves only).
   virtual double capacity() const { return 0.0; }

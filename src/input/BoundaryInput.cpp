@@ -71,22 +71,28 @@ std::vector<ParameterSpec> regionSpecs() {
 std::vector<ParameterSpec> conditionSpecs() {
   return {S::text("Type", "`Prescribed Displacement`, `Initial Displacement`, `Initial Velocity`, `Body Force`, "
                           "`Pressure` (on the surface whose outer layer of points is the node set), `Prescribed "
-                          "Temperature`, `Initial Temperature` (the Temperature field, docs/input.md \"Temperature\"); "
-                          "`Rigid Wall` has its own parameters (below)")
+                          "Temperature`, `Initial Temperature`, `Heat Flux`, `Convection` (the Temperature field, "
+                          "docs/input.md \"Temperature\"); `Rigid Wall` has its own parameters (below)")
               .need().oneOf({"Prescribed Displacement", "Initial Displacement", "Initial Velocity", "Body Force",
-                             "Pressure", "Prescribed Temperature", "Initial Temperature", "Rigid Wall"}),
+                             "Pressure", "Prescribed Temperature", "Initial Temperature", "Heat Flux", "Convection",
+                             "Rigid Wall"}),
           S::text("Node Set", "a node-set name (`All`: every node, unless the deck defines its own `All`)").need(),
           S::text("Coordinate", "`x`, `y` or `z`; required, except for `Pressure` (which acts along the surface's "
                                 "normal) and the temperature conditions (a scalar)").oneOf({"x", "y", "z"}),
           S::scalar("Value", "expression in `x`, `y`, `z` (reference coordinates) and `t`; for `Pressure` the "
-                             "pressure [Pa], positive pushing on the body").need(),
-          S::real("Layer Thickness", "`Pressure` only: thickness of the surface layer the node set holds; a point of "
-                                     "volume V stands for the area V / thickness. Default: the grid spacing")
+                             "pressure [Pa], positive pushing on the body; for `Heat Flux` the flux into the body "
+                             "[W/m^2]; required except for `Convection`"),
+          S::real("Layer Thickness", "`Pressure`, `Heat Flux`, `Convection`: thickness of the surface layer the node "
+                                     "set holds; a point of volume V stands for the area V / thickness. Default: the "
+                                     "grid spacing")
               .positive(),
           S::flag("Follower", "`Pressure` only: `true` makes it a follower load, acting on the deformed surface "
                               "(traction -p J F^-T N per reference area, as a fluid pressure); needs Blocks "
                               "`Surface Correction` = `NDO Band`. `false`: a dead load on the reference area (-p N)")
-              .byDefault("false")};
+              .byDefault("false"),
+          S::real("Heat Transfer Coefficient", "`Convection` only: h [W/(m^2 K)] of the heat flow h (T_amb - T) "
+                                               "into the surface").positive(),
+          S::scalar("Ambient Temperature", "`Convection` only: T_amb [K], an expression in `x`, `y`, `z`, `t`")};
 }
 
 std::vector<NodeSetSpec> parseNodeSets(const PL& bcs, const std::set<std::string>& generated, const std::string& file,
@@ -145,26 +151,38 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
              : type == "Body Force"            ? K::BodyForce
              : type == "Prescribed Temperature" ? K::PrescribedTemperature
              : type == "Initial Temperature"   ? K::InitialTemperature
+             : type == "Heat Flux"             ? K::HeatFlux
+             : type == "Convection"            ? K::Convection
                                                : K::Pressure;
-    const bool scalar = c.kind == K::PrescribedTemperature || c.kind == K::InitialTemperature;
-    if (scalar) {
-      if (v.has("Coordinate")) fail(file, bpath, "'Coordinate' does not apply to a " + type + " (a scalar field)");
-      if (v.has("Layer Thickness")) fail(file, bpath, "'Layer Thickness' applies to a Pressure only");
-      if (v.flag("Follower")) fail(file, bpath, "'Follower' applies to a Pressure only");
-    } else if (c.kind == K::Pressure) {
+    const bool surface = c.kind == K::Pressure || c.kind == K::HeatFlux || c.kind == K::Convection;
+    const bool convection = c.kind == K::Convection;
+    if (v.has("Layer Thickness") && !surface)
+      fail(file, bpath, "'Layer Thickness' applies to a Pressure, Heat Flux or Convection only");
+    if (v.flag("Follower") && c.kind != K::Pressure) fail(file, bpath, "'Follower' applies to a Pressure only");
+    for (const char* n : {"Heat Transfer Coefficient", "Ambient Temperature"}) {
+      if (v.has(n) && !convection) fail(file, bpath, std::string("'") + n + "' applies to a Convection only");
+      if (!v.has(n) && convection) fail(file, bpath, std::string("missing required parameter '") + n + "'");
+    }
+    if (convection && v.has("Value")) fail(file, bpath, "'Value' does not apply to a Convection (give 'Ambient Temperature')");
+    if (!convection && !v.has("Value")) fail(file, bpath, "missing required parameter 'Value'");
+    const bool scalar = c.kind == K::PrescribedTemperature || c.kind == K::InitialTemperature || c.kind == K::HeatFlux ||
+                        convection;
+    if (c.kind == K::Pressure) {
       if (v.has("Coordinate")) fail(file, bpath, "'Coordinate' does not apply to a Pressure (it acts along the normal)");
-      c.layerThickness = v.get("Layer Thickness", 0.0);
       c.follower = v.flag("Follower");
+    } else if (scalar) {
+      if (v.has("Coordinate")) fail(file, bpath, "'Coordinate' does not apply to a " + type + " (a scalar field)");
     } else {
       if (!v.has("Coordinate")) fail(file, bpath, "missing required parameter 'Coordinate'");
-      if (v.has("Layer Thickness")) fail(file, bpath, "'Layer Thickness' applies to a Pressure only");
-      if (v.flag("Follower")) fail(file, bpath, "'Follower' applies to a Pressure only");
       c.coordinate = v.text("Coordinate")[0] - 'x';
     }
+    c.layerThickness = v.get("Layer Thickness", 0.0);
+    c.transferCoefficient = v.get("Heat Transfer Coefficient", 0.0);
     c.nodeSet = v.text("Node Set");
     if (!nodeSets.count(c.nodeSet))
       fail(file, bpath, "'Node Set' = '" + c.nodeSet + "' is not defined in Boundary Conditions");
-    c.value = std::make_shared<const Expression>(v.text("Value"), file + ": " + bpath + "/Value");
+    const std::string valueName = convection ? "Ambient Temperature" : "Value";
+    c.value = std::make_shared<const Expression>(v.text(valueName), file + ": " + bpath + "/" + valueName);
     out.push_back(c);
   }
   return out;

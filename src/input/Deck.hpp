@@ -97,14 +97,17 @@ struct ConditionSpec {
     BodyForce,
     Pressure,
     PrescribedTemperature,  // the Temperature field (model/FieldSet.hpp): imposed at every evaluated time
-    InitialTemperature      // its value at the start time
+    InitialTemperature,     // its value at the start time
+    HeatFlux,               // q [W/m^2] into the surface layer (model/FieldSurface.hpp)
+    Convection              // h (T_amb - T) into the surface layer; value: T_amb
   };
   std::string name;                   // the sub-list name
   Kind kind = Kind::PrescribedDisplacement;
   std::string nodeSet;                // a NodeSetSpec, a generated set or "All"
   int coordinate = 0;                 // 0, 1, 2 (not for Pressure or the temperature conditions)
   std::shared_ptr<const Expression> value;
-  double layerThickness = 0.0;        // Pressure: the surface layer's thickness; 0 = the grid spacing
+  double layerThickness = 0.0;        // Pressure, Heat Flux, Convection: the surface layer's thickness; 0 = the spacing
+  double transferCoefficient = 0.0;   // Convection: h
   bool follower = false;              // Pressure: acts on the deformed surface (needs the NDO band)
 };
 

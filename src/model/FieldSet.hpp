@@ -11,6 +11,7 @@
 
 #include "core/FieldValues.hpp"
 #include "core/StateStore.hpp"
+#include "model/FieldSurface.hpp"
 #include "model/NodalLoad.hpp"
 
 namespace pf {
@@ -41,6 +42,9 @@ class FieldSet {
   const std::vector<char>& prescribedMask(const std::string& name) const { return get(name).mask; }
   const std::vector<NodalLoad>& prescribed(const std::string& name) const { return get(name).prescribed; }
   const std::vector<NodalLoad>& initial(const std::string& name) const { return get(name).initial; }
+  // Its surface conditions (Heat Flux, Convection: model/FieldSurface.hpp).
+  FieldSurface& surface(const std::string& name) { return get(name).surface; }
+  const FieldSurface& surface(const std::string& name) const { return get(name).surface; }
 
   // The run's start at t0 (not a restart, whose values come from the checkpoint): the initial conditions,
   // then the prescribed ones of t0, as committed and trial values and as the start values. x: 3 per overlap node.
@@ -56,6 +60,7 @@ class FieldSet {
   struct Field {
     std::string name;
     std::vector<NodalLoad> initial, prescribed;
+    FieldSurface surface;
     std::string rate;  // its rate's output name, or empty
     std::vector<char> mask;
     bool solved = false;

@@ -45,6 +45,7 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     for (int i = b.begin; i < b.end; ++i) density_[i] = b.material->density();
     for (const StateSpec& s : b.material->stateSpecs()) specs.push_back(s);
   }
+  prepareFieldOperators();
   // A field term's source reads material outputs that are computed only when asked for (plastic work).
   for (const BlockModel& b : blocks_)
     for (const auto& op : b.fieldOperators)

@@ -3,6 +3,7 @@
 // the blocks' materials, lumped density, stiffness bound, boundary conditions and state commit/rollback.
 // Solvers see only this class (and never which material sits behind it).
 #include <cmath>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -163,7 +164,11 @@ class Model {
   // Per owned node: the blocks' sources on `field` (W/m^3 for Temperature) over the last evaluated step of length dt
   // (the trial state less the committed one: call between internalForce and commit).
   void fieldSource(const std::string& field, double dt, double* source) const;
-  // Collective: whether some block has a linear operator (conduction) / a source (plastic heating) / any term on it.
+  // Per owned node: the field's surface conditions' source at the time of the last applyPrescribed (Heat Flux
+  // q / l, Convection h T_amb / l; model/FieldSurface.hpp); their linear part is in fieldRate and fieldDiagonal.
+  void fieldSurfaceSource(const std::string& field, double* source) const;
+  // Collective: whether some block has a linear operator (conduction, or a convection condition) / a source (plastic
+  // heating, or a surface condition) / any term on it.
   bool hasOperator(const std::string& field) const;
   bool hasFieldSource(const std::string& field) const;
   bool hasFieldTerms(const std::string& field) const;
@@ -191,6 +196,11 @@ class Model {
   std::unique_ptr<SurfaceBand> band_;             // null: no block has the NDO band
   FieldSet fields_;
   std::vector<double> fieldOverlap_;  // fieldRate's ghosted values
+  // The field operators' own node values (FieldOperator::nodeValue), per overlap node, ghosted once at construction,
+  // and the view of them the operators get as FamilyView::fields.
+  std::map<std::string, std::vector<double>> operatorValueArrays_;
+  FieldValues operatorValues_;
+  void prepareFieldOperators();
   double fieldLoad_ = 0.0, fieldLoadTime_ = NAN;
   bool fieldLoadWanted_ = false;
   void updateFieldLoad();

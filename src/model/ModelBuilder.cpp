@@ -157,6 +157,21 @@ void addPressure(Model& model, const ConditionSpec& bc, const std::vector<int>& 
     bc.follower ? model.addFollowerPressure(std::move(l)) : model.addBodyForce(std::move(l));
 }
 
+// Heat Flux / Convection on the layer of points the node set holds (model/FieldSurface.hpp).
+void addSurfaceHeat(Model& model, const ConditionSpec& bc, NodalLoad load, double spacing, const std::string& inputFile) {
+  const double l = bc.layerThickness > 0 ? bc.layerThickness : spacing;
+  if (!(l > 0))
+    throw InputError(inputFile + ": Boundary Conditions/" + bc.name + ": 'Layer Thickness' is needed: the "
+                     "discretization has no grid spacing to default to");
+  load.coordinate = 0;
+  model.addField("Temperature");
+  FieldSurface& surface = model.fields().surface("Temperature");
+  if (bc.kind == ConditionSpec::Kind::HeatFlux)
+    surface.addFlux(std::move(load), l);
+  else
+    surface.addConvection(std::move(load), bc.transferCoefficient, l);
+}
+
 // Points without bonds carry no force and make the stiffness singular: one line, with the first of them.
 void warnPointsWithoutBonds(const Model& model, const std::string& inputFile) {
   double count = 0, first = -1e300;  // first: -(smallest 1-based id), reduced as a max
@@ -262,6 +277,8 @@ void addConditions(const Deck& deck, Problem& pb, const std::unordered_map<int, 
         pb.model->addField("Temperature");
         pb.model->fields().addInitial("Temperature", load);
         break;
+      case ConditionSpec::Kind::HeatFlux:
+      case ConditionSpec::Kind::Convection: addSurfaceHeat(*pb.model, bc, load, spacing, inputFile); break;
     }
   }
 }

@@ -18,6 +18,7 @@ ExplicitFieldStep::ExplicitFieldStep(const Model& model, std::string field, cons
                              "material 'Specific Heat Capacity' with 'Thermal Conductivity' or 'Taylor-Quinney "
                              "Coefficient'");
   capacity_.assign(n, 0.0), diag_.assign(n, 0.0), T_.assign(n, 0.0), rate_.assign(n, 0.0), source_.assign(n, 0.0);
+  surface_.assign(n, 0.0);
   model.fieldCapacity(field_, capacity_.data());
   double missing = 0.0;
   for (double c : capacity_) missing = c > 0.0 ? missing : 1.0;
@@ -39,13 +40,18 @@ long ExplicitFieldStep::subSteps(double dt) const {
   return std::max(1L, static_cast<long>(std::ceil(dt / stable_ - 1e-12)));
 }
 
-void ExplicitFieldStep::advance(Model& model, double dt) {
+void ExplicitFieldStep::advance(Model& model, double dt, bool mechanicsEvaluated) {
   const int n = model.numOwned();
   StateStore& state = model.state();
   const std::vector<char>& mask = model.fields().prescribedMask(field_);
   // The trial holds the committed values with the step end's prescribed ones (the evaluation's, or updateFields).
   std::copy(state.trial(field_), state.trial(field_) + n, T_.begin());
-  if (heats_) model.fieldSource(field_, dt, source_.data());
+  if (heats_) {
+    // The blocks' sources read the step's mechanical state: only after a force evaluation.
+    if (mechanicsEvaluated) model.fieldSource(field_, dt, source_.data());
+    model.fieldSurfaceSource(field_, surface_.data());
+    for (int i = 0; i < n; ++i) source_[i] = (mechanicsEvaluated ? source_[i] : 0.0) + surface_[i];
+  }
   const long m = subSteps(dt);
   const double h = dt / static_cast<double>(m);
   for (long k = 0; k < m; ++k) {

@@ -22,9 +22,10 @@ class ExplicitFieldStep {
   double stableStep() const { return stable_; }
   // Sub-steps for a step of length dt.
   long subSteps(double dt) const;
-  // The trial field of the step's end from the committed one, its rate output, the change and ghosts (the step's
-  // force evaluation, if any, must come first: the sources read its trial state). Call before Model::commit.
-  void advance(Model& model, double dt);
+  // The trial field of the step's end from the committed one, its rate output, the change and ghosts. With
+  // mechanicsEvaluated the step's force evaluation came first and the blocks' sources (plastic heating) read its trial
+  // state; without (a thermal-only run) only the surface conditions heat. Call before Model::commit.
+  void advance(Model& model, double dt, bool mechanicsEvaluated);
   // Sub-steps of the advances so far (a deterministic work count).
   long subStepsTaken() const { return taken_; }
   // Below the Gershgorin bound by a margin for the round-off of the capacity and coefficient sums.
@@ -32,7 +33,7 @@ class ExplicitFieldStep {
 
  private:
   std::string field_;
-  std::vector<double> capacity_, diag_, T_, rate_, source_;
+  std::vector<double> capacity_, diag_, T_, rate_, source_, surface_;
   double stable_ = 0.0;
   bool conducts_ = false, heats_ = false;
   long taken_ = 0;

@@ -78,15 +78,18 @@ int ImplicitDiffusionSolver::solveStep(Model& model, double tPrev, double t, std
   const std::vector<char>& mask = model.fields().prescribedMask(kField);
   const std::vector<double>& V = model.volume();
   auto sum = [&](double x) { return model.sum(x); };
-  // Backward Euler: C (T - T_n) / dt = L(T); steady: L(T) = 0. R = L(T) - C (T - T_n) / dt at the free points.
+  // Backward Euler: C (T - T_n) / dt = L(T) + s; steady: L(T) + s = 0 (s: the surface conditions at t). R = L(T) + s
+  // - C (T - T_n) / dt at the free points.
   const double inertia = opt_.transient ? 1.0 / (t - tPrev) : 0.0;
-  std::vector<double> Tn(state.committed(kField), state.committed(kField) + n), C(n), diag(n), inv(n), r(n), b(n), d(n);
+  std::vector<double> Tn(state.committed(kField), state.committed(kField) + n), C(n), diag(n), inv(n), r(n), b(n), d(n),
+      surface(n);
   model.fieldCapacity(kField, C.data());
+  model.fieldSurfaceSource(kField, surface.data());  // Heat Flux, Convection's ambient part, at t (applyPrescribed)
   auto residualOf = [&] {
     model.fieldRate(kField, T.data(), rate.data());
     double s = 0.0;
     for (int i = 0; i < n; ++i) {
-      r[i] = mask[i] ? 0.0 : rate[i] - inertia * C[i] * (T[i] - Tn[i]);
+      r[i] = mask[i] ? 0.0 : rate[i] + surface[i] - inertia * C[i] * (T[i] - Tn[i]);
       s += r[i] * r[i];
     }
     return std::sqrt(sum(s));

@@ -132,7 +132,7 @@ void VerletSolver::evaluate(Model& model, ExplicitFieldStep* heat, long step, do
     atStep(at, [&] { model.internalForce(u.data(), f.data()); });
   else
     model.updateFields();
-  if (heat && dt > 0.0) atStep(at, [&] { heat->advance(model, dt); });
+  if (heat && dt > 0.0) atStep(at, [&] { heat->advance(model, dt, advances("Displacement")); });
   model.commit();  // an explicit step is complete once its force (and field) is evaluated
 }
 

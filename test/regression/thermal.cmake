@@ -51,3 +51,15 @@ periforge_run(thermal_taylor_conducting_np2 ${REG}/thermal/taylor_conducting.xml
 periforge_check(thermal_taylor_conducting_np2_check thermal_taylor_conducting_np2
   ${PY} ${REG}/thermal/check_heating.py conducting
   ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_conducting_np2/taylor_conducting.e)
+# Heat Flux and Convection on the end layers of an insulated bar: the steady balance T_R = T_amb + q / h, implicit
+# (ImplicitDiffusion, 12 x 12 mm section) and explicit (Verlet thermal only, 4 x 4 mm section, to steady state).
+foreach(np 1 2)
+  foreach(run surface_heat_bar:implicit surface_heat_bar_explicit:explicit)
+    string(REPLACE ":" ";" parts ${run})
+    list(GET parts 0 deck)
+    list(GET parts 1 kind)
+    periforge_run(thermal_${deck}_np${np} ${REG}/thermal/${deck}.xml ${np})
+    periforge_check(thermal_${deck}_np${np}_check thermal_${deck}_np${np}
+      ${PY} ${REG}/thermal/check_surface_heat.py ${kind} ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_${deck}_np${np}/${deck}.e)
+  endforeach()
+endforeach()

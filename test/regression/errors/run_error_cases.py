@@ -184,7 +184,7 @@ CASES = [
      [('<ParameterList name="Left X"><Parameter name="Type" type="string" value="Prescribed Displacement"/>',
        '<ParameterList name="Left X"><Parameter name="Type" type="string" value="Prescribed Displacement"/>'
        '<Parameter name="Layer Thickness" type="double" value="0.001"/>')],
-     ["Boundary Conditions/Left X", "'Layer Thickness' applies to a Pressure only"]),
+     ["Boundary Conditions/Left X", "'Layer Thickness' applies to a Pressure, Heat Flux or Convection only"]),
     ("Pressure on points inside the body",
      [('<ParameterList name="Left X">', '<ParameterList name="Push"><Parameter name="Type" type="string" value="Pressure"/>'
        '<Parameter name="Node Set" type="string" value="All"/><Parameter name="Value" type="string" value="1.0e6"/></ParameterList>\n'
@@ -284,6 +284,15 @@ CASES = [
        '<Parameter name="Hourglass Coefficient" type="double" value="0.05"/>'
        '<Parameter name="Taylor-Quinney Coefficient" type="double" value="0.9"/>')],
      ["Taylor-Quinney Coefficient", "Specific Heat Capacity"]),
+    ("Convection without its coefficient",
+     [('<ParameterList name="Left X">', '<ParameterList name="Cool"><Parameter name="Type" type="string" value="Convection"/>'
+       '<Parameter name="Node Set" type="string" value="All"/><Parameter name="Ambient Temperature" type="string" value="300.0"/>'
+       '</ParameterList>\n    <ParameterList name="Left X">')],
+     ["Boundary Conditions/Cool", "Heat Transfer Coefficient"]),
+    ("Heat Flux without a value",
+     [('<ParameterList name="Left X">', '<ParameterList name="Heat"><Parameter name="Type" type="string" value="Heat Flux"/>'
+       '<Parameter name="Node Set" type="string" value="All"/></ParameterList>\n    <ParameterList name="Left X">')],
+     ["Boundary Conditions/Heat", "Value"]),
     ("ImplicitDiffusion without conduction",
      [('<ParameterList name="Adaptive Dynamic Relaxation">', '<ParameterList name="ImplicitDiffusion">'),
       ('<Parameter name="Relative Tolerance" type="double" value="1.0e-7"/>', '')],
