@@ -7,6 +7,8 @@ _UNITS = [
     ("Plastic_Strain", 1.0, "-"),
     ("Plastic_Extension", 1e3, "mm"),
     ("Dilatation", 1.0, "-"),
+    ("Temperature", 1.0, "K"),
+    ("Flux_Divergence", 1.0, "W/m^3"),
     ("Damage", 1.0, "-"),
     ("Lambda", 1.0, "-"),
     ("Stress", 1e-6, "MPa"),
