@@ -63,3 +63,8 @@ foreach(np 1 2)
       ${PY} ${REG}/thermal/check_surface_heat.py ${kind} ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_${deck}_np${np}/${deck}.e)
   endforeach()
 endforeach()
+# A coupled run (mechanics, conduction, plastic heating, softening) killed after a checkpoint and restarted ends
+# byte-identical to the uninterrupted run, np 1.
+add_test(NAME restart_thermal_taylor_kill_np1_np1
+         COMMAND ${PY} ${REG}/restart/run_restart.py kill ${REG}/thermal/taylor_restart.xml 1 1 ${PERIFORGE_EXE} ${MPIRUN})
+set_tests_properties(restart_thermal_taylor_kill_np1_np1 PROPERTIES LABELS "regression" TIMEOUT 600)
