@@ -240,9 +240,17 @@ void requireBlocksAndDimension(const Deck& deck, PointCloud& slab, const std::ma
     if (planarMaterial && !slab.planar)
       throw InputError(inputFile + ": Materials/" + kv.second.materialName +
                        ": a 2D (Plane Stress / Plane Strain) material needs a 2D discretization (all z = 0)");
-    if (!planarMaterial && slab.planar)
-      throw InputError(inputFile + ": Materials/" + kv.second.materialName +
-                       ": the discretization is 2D; set 'Plane Stress' or 'Plane Strain' and 'Thickness'");
+    if (!planarMaterial && slab.planar) {
+      const MaterialEntry& entry = *deck.material(kv.second.materialName).entry;
+      bool has2D = false;
+      for (const ParameterSpec& p : entry.parameters) has2D = has2D || p.name == "Plane Stress" || p.name == "Plane Strain";
+      throw InputError(inputFile + ": Materials/" + kv.second.materialName + ": the discretization is 2D; " +
+                       (has2D ? std::string("set 'Plane Stress' or 'Plane Strain' and 'Thickness'")
+                              : "material model '" + entry.model + "' is 3D only" +
+                                    (entry.model == "Diffusion" ? " (as Peridigm's); a solid with 'Thermal Conductivity' "
+                                                                  "conducts heat in 2D"
+                                                                : "")));
+    }
   }
 }
 

@@ -293,6 +293,13 @@ CASES = [
      [('<ParameterList name="Left X">', '<ParameterList name="Heat"><Parameter name="Type" type="string" value="Heat Flux"/>'
        '<Parameter name="Node Set" type="string" value="All"/></ParameterList>\n    <ParameterList name="Left X">')],
      ["Boundary Conditions/Heat", "Value"]),
+    ("Diffusion on a 2D discretization",
+     [('<Parameter name="Type" type="string" value="Box With Holes"/>', '<Parameter name="Type" type="string" value="Rectangle With Holes"/>'),
+      ('<Parameter name="Z Length" type="double" value="0.02"/>', '<Parameter name="Thickness" type="double" value="0.002"/>'),
+      ('<Parameter name="Material Model" type="string" value="Elastic"/>.*?</ParameterList>',
+       '<Parameter name="Material Model" type="string" value="Diffusion"/>'
+       '<Parameter name="Coefficient" type="double" value="1.0"/></ParameterList>')],
+     ["Materials/Steel", "3D only"]),
     ("ImplicitDiffusion without conduction",
      [('<ParameterList name="Adaptive Dynamic Relaxation">', '<ParameterList name="ImplicitDiffusion">'),
       ('<Parameter name="Relative Tolerance" type="double" value="1.0e-7"/>', '')],
