@@ -6,6 +6,7 @@
 #include "core/InputError.hpp"
 #include "OsbKernels.hpp"
 #include "OsbPlasticTangent.hpp"
+#include "OsbThermalKernels.hpp"
 #include "ShearCorrectionFactor.hpp"
 #include "SolidParameters.hpp"
 
@@ -53,6 +54,22 @@ ElasticPlasticMaterial::ElasticPlasticMaterial(const MaterialInput& in, bool har
   params_.norm = in.text("Yield Normalization") == "Continuum" ? YieldNormalization::Continuum
                                                                 : YieldNormalization::Discrete;
   shearCorrection_ = hardening ? shearCorrectionOf(in, params_.dim) : ignoredShearCorrection(in, "Elastic Plastic");
+  alpha_ = in.get("Thermal Expansion Coefficient", 0.0);
+  elasticThermal_ = thermalExpansionOf(in, params_.dim, moduli_);
+  // J2Thermal (OsbPlasticKernels.hpp): plane strain's thermal strain is hydrostatic (volume term only).
+  if (params_.dim == Dimension::PlaneStrain) thermal_ = {0.0, elasticThermal_, 3.0 * alpha_};
+  else thermal_ = {alpha_, alpha_, 0.0};
+}
+
+std::vector<std::string> ElasticPlasticMaterial::fieldsRead() const {
+  if (alpha_ == 0.0) return {};
+  return {"Temperature_Change"};
+}
+
+std::vector<std::unique_ptr<FieldOperator>> ElasticPlasticMaterial::heatTerms(const MaterialInput& in) {
+  double thickness = 0.0;
+  const Dimension dim = dimensionFrom(in, &thickness);
+  return heatTermsOf(in, dim, thickness);
 }
 
 std::vector<ParameterSpec> ElasticPlasticMaterial::parameters(bool hardening) {
@@ -73,9 +90,12 @@ std::vector<ParameterSpec> ElasticPlasticMaterial::parameters(bool hardening) {
 }
 
 MaterialEntry ElasticPlasticMaterial::entry() {
-  return {"Elastic Plastic", "OSB J2 elastic-perfectly plastic solid (Mitchell 2011)", parameters(false),
-          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, false)); },
-          outputs()};
+  MaterialEntry e{"Elastic Plastic", "OSB J2 elastic-perfectly plastic solid (Mitchell 2011)",
+                  withThermalExpansion(parameters(false)),
+                  [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, false)); },
+                  outputs()};
+  e.createOperators = heatTerms;
+  return e;
 }
 
 std::vector<std::string> ElasticPlasticMaterial::outputs() {
@@ -134,8 +154,17 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
   f.scf = shearCorrection_ ? scf : nullptr;
   // Disabled plasticity: the history fields stay at their initial zeros in both copies (never written, so
   // StateStore::commit swaps zeros), the dilatation and force are the Elastic model's.
-  if (disablePlasticity_) osbElasticDilatationAndForce(fam, params_.osb, y, f.theta, force);
-  else osbJ2Force(fam, params_, y, f, force);
+  if (alpha_ != 0.0) {  // thermal expansion: the thermal kernels, so the mechanics-only ones stay as they are
+    const double* dT = fam.fields->find("Temperature_Change");
+    if (disablePlasticity_)
+      osbThermoelasticDilatationAndForce(fam, params_.osb, elasticThermal_, dT, y, f.theta, force);
+    else
+      osbJ2ThermalForce(fam, params_, thermal_, dT, y, f, force);
+  } else if (disablePlasticity_) {
+    osbElasticDilatationAndForce(fam, params_.osb, y, f.theta, force);
+  } else {
+    osbJ2Force(fam, params_, y, f, force);
+  }
 }
 
 bool ElasticPlasticMaterial::forceDerivative(const FamilyView& fam, const double* y, const double* dy,

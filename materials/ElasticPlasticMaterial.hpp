@@ -2,6 +2,8 @@
 // "Elastic Plastic": ordinary state-based J2 plasticity (Mitchell 2011; Pirzadeh et al. 2024) in 3D,
 // plane stress and plane strain. The same class carries linear isotropic/kinematic hardening and serves
 // "Elastic Plastic Hardening" (HardeningPlasticity.hpp); with K = H = 0 it is Mitchell's perfect plasticity.
+// With a Thermal Expansion Coefficient it reads Temperature_Change and the plastic flow sees the mechanical
+// extension only (J2Thermal, OsbPlasticKernels.hpp; docs/thermal.md).
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
 #include "OsbPlasticKernels.hpp"
@@ -15,8 +17,12 @@ class ElasticPlasticMaterial : public Material {
   ElasticPlasticMaterial(const MaterialInput& in, bool hardening);
   static MaterialEntry entry();
   // elasticSolidParameters() + Yield Stress + Yield Normalization; hardening: the shear correction as in
-  // Peridigm's Elastic Plastic Hardening (the hardening moduli are added by HardeningPlasticity).
+  // Peridigm's Elastic Plastic Hardening (the hardening moduli are added by HardeningPlasticity). Both entries
+  // append the thermal ones (withThermalExpansion).
   static std::vector<ParameterSpec> parameters(bool hardening);
+  // Its terms on Temperature (SolidParameters.hpp heatTermsOf: conduction with "Thermal Conductivity");
+  // MaterialEntry::createOperators of both entries.
+  static std::vector<std::unique_ptr<FieldOperator>> heatTerms(const MaterialInput& in);
   static std::vector<StateSpec> states();          // what stateSpecs() returns (the same for every input)
   static std::vector<std::string> outputs();       // the output fields among them
 
@@ -25,11 +31,13 @@ class ElasticPlasticMaterial : public Material {
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
   // The consistent tangent of the return mapping (OsbPlasticTangent.hpp), or the elastic one with plasticity
-  // disabled. Reads the committed history, as the force does.
-  bool hasForceDerivative() const override { return true; }
+  // disabled. Reads the committed history, as the force does. With thermal expansion the implicit solvers
+  // differentiate numerically (the thermal kernels have no tangent yet), as for "Elastic".
+  bool hasForceDerivative() const override { return alpha_ == 0.0; }
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
   bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
+  std::vector<std::string> fieldsRead() const override;  // Temperature_Change with thermal expansion
   double density() const override { return density_; }
   Dimension dimension() const override { return params_.dim; }
 
@@ -43,6 +51,9 @@ class ElasticPlasticMaterial : public Material {
   J2Parameters params_;
   bool shearCorrection_ = false;
   bool disablePlasticity_ = false;  // Peridigm's "Disable Plasticity" (Elastic Plastic only): elastic kernel
+  double alpha_ = 0.0;              // Thermal Expansion Coefficient; 0: none
+  J2Thermal thermal_;                // its coefficients in the J2 kernel
+  double elasticThermal_ = 0.0;      // and in the elastic one (Disable Plasticity): thermalExpansionOf
 };
 
 }  // namespace pf

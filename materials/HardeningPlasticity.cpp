@@ -1,5 +1,7 @@
 #include "HardeningPlasticity.hpp"
 
+#include "SolidParameters.hpp"
+
 namespace pf {
 
 MaterialEntry HardeningPlasticity::entry() {
@@ -14,11 +16,14 @@ MaterialEntry HardeningPlasticity::entry() {
                            "Peridigm's H: yield when |t^d|^2/2 - psi0 - H lambda > 0 (elastic_plastic_hardening.cxx; "
                            "3D); H in psi per unit lambda, not Pa")
                        .nonNegative());
-  return {"Elastic Plastic Hardening",
-          "OSB J2 plasticity with linear hardening: Peridigm's law (Hardening Modulus) or isotropic and kinematic "
-          "hardening (Pirzadeh et al. 2024)", params,
-          [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, true)); },
-          ElasticPlasticMaterial::outputs()};
+  params = withThermalExpansion(params);
+  MaterialEntry e{"Elastic Plastic Hardening",
+                  "OSB J2 plasticity with linear hardening: Peridigm's law (Hardening Modulus) or isotropic and "
+                  "kinematic hardening (Pirzadeh et al. 2024)", params,
+                  [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, true)); },
+                  ElasticPlasticMaterial::outputs()};
+  e.createOperators = ElasticPlasticMaterial::heatTerms;
+  return e;
 }
 
 }  // namespace pf

@@ -8,6 +8,7 @@
 #include "core/BondDamage.hpp"
 #include "core/InputError.hpp"
 #include "ElasticModuli.hpp"
+#include "SolidParameters.hpp"
 
 namespace pf {
 
@@ -64,6 +65,15 @@ MicroelasticMaterial::MicroelasticMaterial(const MaterialInput& in)
     throw InputError(where + ": 'Poisson's Ratio' = " + number(in.get("Poisson's Ratio")) +
                      ", but a bond-based solid has nu = " + (nu == 0.25 ? "1/4" : "1/3") + " in " + toString(dim_) +
                      " (omit it or give that value)");
+  // The free stretch of a bond, alpha dT; in plane strain (1 + nu) alpha dT, as "Elastic" (the held
+  // out-of-plane direction adds nu alpha dT to the free in-plane strain).
+  const double alpha = in.get("Thermal Expansion Coefficient", 0.0);
+  thermal_ = dim_ == Dimension::PlaneStrain ? (1.0 + nu) * alpha : alpha;
+}
+
+std::vector<std::string> MicroelasticMaterial::fieldsRead() const {
+  if (thermal_ == 0.0) return {};
+  return {"Temperature_Change"};
 }
 
 MaterialEntry MicroelasticMaterial::entry() {
@@ -78,9 +88,17 @@ MaterialEntry MicroelasticMaterial::entry() {
       P::flag("Plane Strain", "2D plane-strain model (nu = 1/4; needs Thickness)").byDefault("false"),
       P::real("Thickness", "out-of-plane thickness of a 2D model [m]").positive(),
   };
-  return {"Microelastic", "bond-based prototype microelastic solid (PMB, Silling & Askari 2005; breaks with a Damage Model)",
-          params, [](const MaterialInput& in) { return std::unique_ptr<Material>(new MicroelasticMaterial(in)); },
-          {"Stored_Elastic_Energy"}};
+  MaterialEntry e{"Microelastic",
+                  "bond-based prototype microelastic solid (PMB, Silling & Askari 2005; breaks with a Damage Model)",
+                  withThermalExpansion(params),
+                  [](const MaterialInput& in) { return std::unique_ptr<Material>(new MicroelasticMaterial(in)); },
+                  {"Stored_Elastic_Energy"}};
+  e.createOperators = [](const MaterialInput& in) {
+    double thickness = 0.0;
+    const Dimension dim = dimensionFrom(in, &thickness);
+    return heatTermsOf(in, dim, thickness);
+  };
+  return e;
 }
 
 std::vector<StateSpec> MicroelasticMaterial::stateSpecs() const {
@@ -108,24 +126,35 @@ double MicroelasticMaterial::micromodulus(const FamilyView& fam, int i) const {
 
 void MicroelasticMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                         double* force) const {
+  if (thermal_ != 0.0) forces<true>(fam, y, state, force);
+  else forces<false>(fam, y, state, force);
+}
+
+template <bool Thermal>
+void MicroelasticMaterial::forces(const FamilyView& fam, const double* y, StateStore& state, double* force) const {
   double* energy = energyWanted_ ? state.trial("Stored_Elastic_Energy") : nullptr;
+  const double* dT = Thermal ? fam.fields->find("Temperature_Change") : nullptr;
   for (int i = fam.begin; i < fam.end; ++i) {
     // T = c omega s / 2 along M is node i's half of the pair force: node j's own loop adds the other half
     // (f_i += T V_j, f_j -= T V_i, both ends, as the state-based models). With c_i = c_j this is PMB's
     // f = c omega s M; the stored energy V_i (c_i/4) sum omega s^2 |xi| V_j is the potential of these forces.
+    // Thermal: node i's half loses node i's free stretch a dT_i (so the pair force sees the mean of its ends'),
+    // in the force, the energy and the critical-stretch test.
     const double c = micromodulus(fam, i), Vi = fam.volume[i];
+    const double strain = Thermal ? thermal_ * dT[i] : 0.0;
     const double* yi = y + 3 * i;
     double fi[3] = {0.0, 0.0, 0.0}, w = 0.0, broken = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       const int j = fam.neighbors[b];
       const double d[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
       const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), xi = fam.refLength[b];
-      if (fam.brokenN && breakBond(fam, b, len)) {  // a broken bond carries no force and stores no energy
+      const double mech = Thermal ? len - strain * xi : len;  // the length less the free thermal extension
+      if (fam.brokenN && breakBond(fam, b, mech)) {  // a broken bond carries no force and stores no energy
         broken += 1.0;
         continue;
       }
       const double omega = bondInfluence(fam, b), fr = bondFraction(fam, b);
-      const double s = (len - xi) / xi, g = 0.5 * c * omega * s / len;
+      const double s = (mech - xi) / xi, g = 0.5 * c * omega * s / len;
       const double vj = fam.volume[j] * fr, vi = Vi * fr;
       for (int a = 0; a < 3; ++a) {
         fi[a] += g * d[a] * vj;
@@ -142,9 +171,19 @@ void MicroelasticMaterial::computeForce(const FamilyView& fam, const double* y, 
 
 bool MicroelasticMaterial::forceDerivative(const FamilyView& fam, const double* y, const double* dy,
                                            const StateStore&, double* dforce) const {
-  // d(T M) = dT M + T (I - M M^T) dY / |Y|, dT = c omega (M . dY) / (2 |xi|): exact, rotations included.
+  if (thermal_ != 0.0) derivative<true>(fam, y, dy, dforce);
+  else derivative<false>(fam, y, dy, dforce);
+  return true;
+}
+
+template <bool Thermal>
+void MicroelasticMaterial::derivative(const FamilyView& fam, const double* y, const double* dy, double* dforce) const {
+  // d(T M) = dT M + T (I - M M^T) dY / |Y|, dT = c omega (M . dY) / (2 |xi|): exact, rotations included. The
+  // temperature is held (a given field), so the thermal stretch changes T only.
+  const double* dT = Thermal ? fam.fields->find("Temperature_Change") : nullptr;
   for (int i = fam.begin; i < fam.end; ++i) {
     const double c = micromodulus(fam, i), Vi = fam.volume[i];
+    const double strain = Thermal ? thermal_ * dT[i] : 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       if (fam.brokenN && fam.broken[b] != 0.0) continue;  // as the force evaluation at y left it
       const int j = fam.neighbors[b];
@@ -157,15 +196,14 @@ bool MicroelasticMaterial::forceDerivative(const FamilyView& fam, const double* 
       const double M[3] = {d[0] / len, d[1] / len, d[2] / len};
       const double de = M[0] * dd[0] + M[1] * dd[1] + M[2] * dd[2];
       const double half = 0.5 * c * bondInfluence(fam, b) / xi, fr = bondFraction(fam, b);
-      const double T = half * (len - xi), dT = half * de;
+      const double T = half * ((Thermal ? len - strain * xi : len) - xi), dTde = half * de;
       for (int a = 0; a < 3; ++a) {
-        const double dTM = dT * M[a] + T * (dd[a] - M[a] * de) / len;
+        const double dTM = dTde * M[a] + T * (dd[a] - M[a] * de) / len;
         dforce[3 * i + a] += dTM * fam.volume[j] * fr;
         dforce[3 * j + a] -= dTM * Vi * fr;
       }
     }
   }
-  return true;
 }
 
 void MicroelasticMaterial::pairStiffness(const FamilyView& fam, double* stiffness) const {

@@ -4,6 +4,8 @@
 // s = (|Y| - |xi|)/|xi|, M = Y/|Y|, with the micromodulus c set so that an isotropic stretch stores the
 // continuum energy (3D: c = 18K/(pi delta^4)).
 // 3D and plane strain have nu = 1/4, plane stress nu = 1/3. Declares Stored_Elastic_Energy = V_i W_i.
+// With a Thermal Expansion Coefficient alpha it reads Temperature_Change: node i's half of each pair force sees
+// the stretch less a dT_i (a = alpha; (1 + nu) alpha in plane strain), so the pair sees the mean of its ends'.
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
 
@@ -23,6 +25,7 @@ class MicroelasticMaterial : public Material {
                        double* dforce) const override;
   void enableOutput(const std::string& name) const override;
   bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
+  std::vector<std::string> fieldsRead() const override;  // Temperature_Change with thermal expansion
   double density() const override { return density_; }
   Dimension dimension() const override { return dim_; }
 
@@ -35,9 +38,16 @@ class MicroelasticMaterial : public Material {
   double micromodulus(const FamilyView& fam, int i) const;
 
  private:
+  // The loops, mechanics-only (Thermal false: the code as before) or with the thermal stretch.
+  template <bool Thermal>
+  void forces(const FamilyView& fam, const double* y, StateStore& state, double* force) const;
+  template <bool Thermal>
+  void derivative(const FamilyView& fam, const double* y, const double* dy, double* dforce) const;
+
   double thickness_;  // before dim_: dimensionFrom (dim_'s initialiser) writes it
   Dimension dim_;
   double density_, bulk_;
+  double thermal_ = 0.0;  // a of the free thermal stretch a dT (see the .cpp); 0: no thermal expansion
   mutable bool energyWanted_ = false;  // set by enableOutput("Stored_Elastic_Energy") before the run
 };
 

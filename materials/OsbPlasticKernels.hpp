@@ -52,4 +52,22 @@ struct J2Fields {
 void osbJ2Force(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
                 double* force);
 
+// Thermal expansion of the J2 solid, per unit Temperature_Change dT_i of the node owning the bond (Peridigm's rule
+// for its elastic model, materials/OsbThermalKernels.hpp; docs/thermal.md):
+//   3D, plane stress: every bond of node i loses its free thermal extension alpha dT_i |xi| before anything else
+//     (dilatation, deviatoric split, return mapping, critical stretch): extension = breaking = alpha, volume = 0.
+//   plane strain: the thermal strain alpha dT I, its held out-of-plane part included, is hydrostatic, so the
+//     deviatoric state and the flow see the total in-plane extension and only the dilatation loses
+//     theta_th = volume dT_i sum omega |xi|^2 V_j / m (volume = 3 alpha: 3 alpha dT for a whole family);
+//     extension = 0, breaking = (1 + nu) alpha (the free in-plane stretch, as "Elastic" breaks bonds).
+struct J2Thermal {
+  double extension = 0.0, breaking = 0.0, volume = 0.0;
+};
+
+// osbJ2Force with thermal expansion; dT: Temperature_Change per overlap node. The Dilatation written is the
+// mechanical one. osbJ2Force's node update over a thermal gather (OsbThermalPlasticKernels.cpp): the
+// mechanics-only kernel is untouched.
+void osbJ2ThermalForce(const FamilyView& fam, const J2Parameters& p, const J2Thermal& th, const double* dT,
+                       const double* y, const J2Fields& s, double* force);
+
 }  // namespace pf

@@ -15,6 +15,33 @@ foreach(np 1 2)
   periforge_check(conduction_bar_np${np}_check conduction_bar_np${np}
     ${PY} ${REG}/thermal/check_conduction.py ${CMAKE_CURRENT_BINARY_DIR}/regression/conduction_bar_np${np}/conduction_bar.e)
 endforeach()
+# Thermal expansion of Elastic Plastic, Elastic Plastic Hardening and Microelastic (3D, plane stress, plane strain)
+# against the same closed forms, heated within the elastic range (sigma_y 500 MPa), and Elastic Plastic (and, once,
+# Elastic Plastic Hardening) heated past yield (sigma_y 100 MPa): free blocks stress-free with no plastic flow, clamped
+# 3D and plane-strain blocks hydrostatic, a clamped plane-stress block and a free plane-strain one (sigma_zz) on the
+# perfectly plastic (hardening) closed forms; np 1 and 2 (check_thermal_models.py).
+foreach(np 1 2)
+  foreach(model ep eph micro)
+    foreach(kind free clamped)
+      foreach(dim 3d plane_stress plane_strain)
+        set(name thermal_${kind}_${model}_${dim}_np${np})
+        periforge_run(${name} ${REG}/thermal/thermal_${kind}_${model}_${dim}.xml ${np})
+        periforge_check(${name}_check ${name} ${PY} ${REG}/thermal/check_thermal_models.py elastic ${model} ${kind}
+          ${dim} ${CMAKE_CURRENT_BINARY_DIR}/regression/${name}/thermal_${kind}_${model}_${dim}.e)
+      endforeach()
+    endforeach()
+  endforeach()
+  foreach(case free_ep_3d free_ep_plane_stress free_ep_plane_strain clamped_ep_3d clamped_ep_plane_stress
+          clamped_ep_plane_strain clamped_eph_plane_stress)
+    string(REGEX MATCH "^[a-z]+" kind ${case})
+    string(REGEX MATCH "ep[h]?" model ${case})
+    string(REGEX REPLACE "^[a-z]+_ep[h]?_" "" dim ${case})
+    set(name thermal_yield_${case}_np${np})
+    periforge_run(${name} ${REG}/thermal/thermal_yield_${case}.xml ${np})
+    periforge_check(${name}_check ${name} ${PY} ${REG}/thermal/check_thermal_models.py yield ${model} ${kind} ${dim}
+      ${CMAKE_CURRENT_BINARY_DIR}/regression/${name}/thermal_yield_${case}.e)
+  endforeach()
+endforeach()
 # Transient conduction (ImplicitDiffusion, Backward Euler) against Fourier's decaying mode, 3D, plane stress, plane
 # strain, np 1 and 2.
 foreach(np 1 2)
