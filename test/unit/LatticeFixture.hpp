@@ -4,6 +4,7 @@
 // volumes, plus a hand-built ElasticMaterial. Header-only; used by the material unit tests.
 #include <cmath>
 #include <memory>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -71,6 +72,17 @@ inline Lattice makeLattice(int n, bool planar, double dx, double ratio, double t
   L.m.assign(L.numQueries, 0.0);
   pf::computeWeightedVolume(L.view(), L.m.data());
   return L;
+}
+
+// The lattice's positions moved by independent uniform random offsets in [-amplitude, amplitude] per in-plane (2D)
+// or every (3D) component; a fixed seed makes the motion repeatable.
+inline std::vector<double> randomMotion(const Lattice& L, double amplitude, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
+  std::vector<double> y = L.x;
+  for (int p = 0; p < L.numNodes; ++p)
+    for (int a = 0; a < (L.planar ? 2 : 3); ++a) y[3 * p + a] += u(rng);
+  return y;
 }
 
 inline std::unique_ptr<pf::ElasticMaterial> makeElastic(pf::Dimension dim, double E, double nu,

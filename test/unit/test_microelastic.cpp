@@ -135,15 +135,6 @@ std::vector<double> force(const pftest::Lattice& L, const pf::Material& mat, con
   return f;
 }
 
-std::vector<double> randomMotion(const pftest::Lattice& L, double amplitude, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-amplitude, amplitude);
-  std::vector<double> y = L.x;
-  for (int p = 0; p < L.numNodes; ++p)
-    for (int a = 0; a < (L.planar ? 2 : 3); ++a) y[3 * p + a] += u(rng);
-  return y;
-}
-
 }  // namespace
 
 // 3. Newton's third law and central forces, for any deformation (random, 1 % of dx plus a large rotation):

@@ -43,15 +43,6 @@ std::map<std::string, double> values(const std::string& model, Dimension dim, do
   return v;
 }
 
-std::vector<double> randomMotion(const pftest::Lattice& L, double amplitude, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-amplitude, amplitude);
-  std::vector<double> y = L.x;
-  for (int p = 0; p < L.numNodes; ++p)
-    for (int a = 0; a < (L.planar ? 2 : 3); ++a) y[3 * p + a] += u(rng);
-  return y;
-}
-
 // One evaluation of a whole lattice (every family built), with Temperature_Change dT and, if sc > 0, bond damage.
 struct Evaluation {
   pf::StateStore state;
