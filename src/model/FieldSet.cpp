@@ -101,6 +101,14 @@ void FieldSet::impose(double t, const std::vector<double>& x, StateStore& state,
   }
 }
 
+void FieldSet::updateChange(const std::string& name, StateStore& state) const {
+  const std::size_t n = get(name).mask.size();
+  const double* v = state.trial(name);
+  const double* t0 = state.committed(startOf(name));
+  double* change = state.trial(changeOf(name));
+  for (std::size_t i = 0; i < n; ++i) change[i] = v[i] - t0[i];
+}
+
 void FieldSet::afterCommit(StateStore& state) const {
   for (const Field& f : fields_)
     if (f.solved) std::copy(state.committed(f.name), state.committed(f.name) + f.mask.size(), state.trial(f.name));

@@ -35,6 +35,9 @@ class FieldSet {
   void addPrescribed(const std::string& name, NodalLoad load);
   // A solver advances the field: impose() keeps its trial values except at prescribed nodes.
   void setSolved(const std::string& name) { get(name).solved = true; }
+  // A solver wrote new trial values of the field: its trial `<name>_Change` (owned nodes) follows them. The ghosts
+  // are left to the next impose (every evaluation starts with one), so a step's end does not exchange them twice.
+  void updateChange(const std::string& name, StateStore& state) const;
   // After StateStore::commit (whose trial copies are then stale): a solved field's trial values = its committed ones,
   // where its solver's next step starts.
   void afterCommit(StateStore& state) const;

@@ -50,7 +50,7 @@ void ExplicitFieldStep::advance(Model& model, double dt, bool mechanicsEvaluated
     // The blocks' sources read the step's mechanical state: only after a force evaluation.
     if (mechanicsEvaluated) model.fieldSource(field_, dt, source_.data());
     model.fieldSurfaceSource(field_, surface_.data());
-    for (int i = 0; i < n; ++i) source_[i] = (mechanicsEvaluated ? source_[i] : 0.0) + surface_[i];
+    for (int i = 0; i < n; ++i) source_[i] = mechanicsEvaluated ? source_[i] + surface_[i] : surface_[i];
   }
   const long m = subSteps(dt);
   const double h = dt / static_cast<double>(m);
@@ -66,7 +66,7 @@ void ExplicitFieldStep::advance(Model& model, double dt, bool mechanicsEvaluated
     throw SolverFailure("the " + field_ + " field is not finite after the explicit step of length " +
                         std::to_string(dt) + " (" + std::to_string(m) + " sub-steps)");
   std::copy(T_.begin(), T_.end(), state.trial(field_));
-  model.updateFields();  // the change and the ghosts of the advanced field
+  model.fields().updateChange(field_, state);  // the ghosts follow at the next evaluation's impose
   // Flux_Divergence: the conduction of the last sub-step's start (Peridigm's output is L(T)).
   const std::string& rateName = model.fields().rateName(field_);
   if (!rateName.empty()) std::copy(rate_.begin(), rate_.end(), state.trial(rateName));

@@ -22,7 +22,7 @@ class ExplicitFieldStep {
   double stableStep() const { return stable_; }
   // Sub-steps for a step of length dt.
   long subSteps(double dt) const;
-  // The trial field of the step's end from the committed one, its rate output, the change and ghosts. With
+  // The trial field of the step's end from the committed one, its rate output and its change (the ghosts follow at the next evaluation). With
   // mechanicsEvaluated the step's force evaluation came first and the blocks' sources (plastic heating) read its trial
   // state; without (a thermal-only run) only the surface conditions heat. Call before Model::commit.
   void advance(Model& model, double dt, bool mechanicsEvaluated);
