@@ -10,8 +10,10 @@ conservation (the bond constant symmetric in i and j). Tolerance 1e-6 K (implici
 the transient, plus the slowest conduction mode's remnant). A flux applied twice, a convection on the wrong
 temperature miss by kelvins; the per-node bond constant c_i = 6k / S_i of the first version (not conservative where
 families differ) left the layer 0.01 K off in the 4 mm bar, 1e4 times the implicit tolerance.
-Printed, not asserted: the axial gradient between the layers against Fourier's q / k (the surface effect of the
-insulated sides: the family normalisation makes the cut families near a side over-conduct along it).
+The axial gradient between the layers against Fourier's q / k measures the surface effect of the insulated sides (the
+family normalisation makes the cut families near a side over-conduct along it, so the ratio is below 1): held
+between 0.9 and 1 in the 12 x 12 mm section (measured 0.948) and between 0.75 and 1 in the 4 x 4 mm one (0.821), so
+that a change which makes the effect much worse, or flips its sign, fails.
 """
 import sys
 
@@ -33,10 +35,11 @@ def main(kind, path):
     err = abs(t_right - (T_AMB + Q / H))
     gradient = (Tm[5] - Tm[-6]) / (xs[-6] - xs[5])
     tol = 1e-6 if kind == "implicit" else 0.05
+    lowest = 0.9 if kind == "implicit" else 0.75  # the 12 mm (implicit) and 4 mm (explicit) sections
     print(f"surface heat ({kind}): convecting layer at {t_right:.6f} K, T_amb + q/h = {T_AMB + Q / H:.1f} K, "
           f"error {err:.2e} K (tolerance {tol:g}); axial gradient {gradient:.2f} K/m = {gradient / (Q / K):.4f} q/k "
-          f"(surface effect of the insulated sides)")
-    ok = err < tol and gradient > 0
+          f"(surface effect of the insulated sides; bounds [{lowest}, 1))")
+    ok = err < tol and lowest <= gradient / (Q / K) < 1.0
     print("check_surface_heat: PASS" if ok else "check_surface_heat: FAIL")
     return 0 if ok else 1
 
