@@ -111,8 +111,10 @@ std::vector<std::pair<std::string, std::string>> runFingerprint(const Deck& deck
   items.emplace_back("coordinate sum", number(coordinateSum(model)));
   for (const MaterialSpec& m : deck.materials)
     items.emplace_back("material '" + m.name + "'", "Material Model = " + m.entry->model + "; " + valuesText(m.values));
-  for (const BlockModel& b : model.blocks())
-    items.emplace_back("block " + b.name, b.materialName + ", horizon " + number(b.horizon));
+  // The deck's block groups, not model.blocks(): those are the blocks this rank owns points of, and a rank without
+  // points of some block would find the file foreign alone and leave the others waiting.
+  for (const BlockGroupSpec& b : deck.blocks)
+    items.emplace_back("block group '" + b.name + "'", b.material + ", horizon " + number(b.horizon));
   std::string history;
   for (const StateSpec& s : problem.model->state().specs())
     if (s.history) history += s.name + (s.where == Location::Node ? " (point) " : " (bond) ");

@@ -6,13 +6,14 @@ namespace pf {
 
 const std::vector<std::string>& coreVectorFields() {
   static const std::vector<std::string> v = {"Displacement", "Velocity", "Force_Density", "Force",
-                                             "Model_Coordinates", "Coordinates", "Acceleration", "External_Force_Density"};
+                                             "Model_Coordinates", "Coordinates", "Acceleration", "External_Force_Density",
+                                             "Contact_Force_Density"};
   return v;
 }
 
 const std::vector<std::string>& coreScalarFields() {
   static const std::vector<std::string> v = {"Weighted_Volume", "Element_Id", "Proc_Num", "Number_Of_Neighbors",
-                                             "Volume", "Horizon", "Damage", "Radius"};
+                                             "Volume", "Horizon", "Damage", "Radius", "Kinetic_Energy"};
   return v;
 }
 

@@ -119,6 +119,28 @@ struct RigidWallSpec {
   std::array<double, 3> normal{};     // unit normal pointing to the side the body stays on
 };
 
+// Peridigm's "Contact" list (model/ContactForce.hpp): short-range forces between points that share no bond,
+// found in the deformed configuration.
+struct ContactModelSpec {
+  std::string name;                              // the sub-list of Contact/Models
+  double contactRadius = 0.0, springConstant = 0.0;
+  double friction = 0.0;                         // Short Range Force: the friction coefficient
+  std::shared_ptr<const Expression> frictionOfTime;  // Time Dependent Short Range Force: mu(t); null otherwise
+};
+struct ContactInteractionSpec {
+  std::string name;                              // the sub-list of Contact/Interactions
+  enum class Kind { Pair, General, Self } kind = Kind::Pair;
+  std::string firstBlock, secondBlock;           // Pair: the two block names (may be equal)
+  int model = 0;                                 // index into ContactSpec::models
+};
+struct ContactSpec {
+  bool given = false;
+  double searchRadius = 0.0;
+  int searchFrequency = 1;
+  std::vector<ContactModelSpec> models;
+  std::vector<ContactInteractionSpec> interactions;
+};
+
 struct SolverSpec {
   std::string listName;               // "Solver", "Solver1", ...
   std::string type;                   // the solver sub-list: "Verlet", "NOXQuasiStatic", ...
@@ -183,6 +205,7 @@ struct Deck {
   std::vector<ComputeSpec> computes;  // "Compute Class Parameters", in deck order
   std::vector<ConditionSpec> conditions;
   std::vector<RigidWallSpec> walls;
+  ContactSpec contact;
   std::vector<SolverSpec> solvers;    // run in sequence
   std::vector<OutputSpec> outputs;
   RestartSpec restart;

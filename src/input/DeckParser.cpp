@@ -2,6 +2,7 @@
 // the default layer width, node sets the names conditions and reactions refer to).
 #include "DeckParser.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -14,15 +15,31 @@ namespace pf {
 
 namespace {
 
+// The output lists: Output, then Peridigm's numbered Output1, Output2, ..., then, as Peridigm reads them, every
+// other top-level list whose name contains "Output" ("Output Data", "Output History 1") in deck order.
+std::vector<std::string> outputLists(const PL& p) {
+  std::vector<std::string> lists = numberedLists(p, "Output");
+  for (auto it = p.begin(); it != p.end(); ++it) {
+    const std::string& n = p.name(it);
+    if (p.entry(it).isList() && n.find("Output") != std::string::npos &&
+        std::find(lists.begin(), lists.end(), n) == lists.end() &&
+        !(n.compare(0, 6, "Output") == 0 && n.size() > 6 && n.find_first_not_of("0123456789", 6) == std::string::npos))
+      lists.push_back(n);
+  }
+  return lists;
+}
+
 // Top-level sub-lists a deck may hold; Peridigm's numbered Solver<n>/Output<n> lists with n = 1, 2, ...
 std::vector<std::string> topLists(const PL& p, const std::string& file) {
   std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart",
-                                    "Damage Models", "Compute Class Parameters"};
+                                    "Damage Models", "Compute Class Parameters", "Contact"};
   for (const std::string stem : {"Solver", "Output"}) {
     const std::vector<std::string> lists = numberedLists(p, stem);
     tops.insert(tops.end(), lists.begin(), lists.end());
     if (!p.isSublist(stem)) tops.push_back(stem);  // so that a missing one is reported as such
   }
+  for (const std::string& n : outputLists(p))
+    if (std::find(tops.begin(), tops.end(), n) == tops.end()) tops.push_back(n);
   for (auto it = p.begin(); it != p.end(); ++it) {
     const std::string& n = p.name(it);
     for (const std::string stem : {"Solver", "Output"})
@@ -50,7 +67,7 @@ std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<st
   std::set<std::string> labels;
   for (const ComputeSpec& c : deck.computes) labels.insert(c.label);
   std::map<std::string, std::string> files;  // Output Filename -> list
-  for (const std::string& n : numberedLists(p, "Output")) {
+  for (const std::string& n : outputLists(p)) {
     out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels));
     const std::string& f = out.back().filename;
     if (files.count(f)) fail(deck.file, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");
@@ -104,6 +121,7 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
     deck.conditions = parseConditions(bcs, nodeSets, file);
     deck.walls = parseRigidWalls(bcs, nodeSets, deck.solvers, file);
   }
+  deck.contact = parseContact(p, deck.solvers, deck.blocks, file);
   if (p.isSublist("Compute Class Parameters"))
     deck.computes = parseComputes(p.sublist("Compute Class Parameters"), nodeSets, file);
   deck.outputs = outputs(p, deck, nodeSets);

@@ -46,6 +46,16 @@ std::vector<ParameterSpec> rigidWallSpecs();
 std::vector<RigidWallSpec> parseRigidWalls(const PL& bcs, const std::set<std::string>& nodeSets,
                                            const std::vector<SolverSpec>& solvers, const std::string& file);
 
+// Contact (optional): the list's own parameters, a model's, an interaction's (a block pair, or General / Self
+// Contact). solvers: every one must be Verlet (the only integrator that applies contact forces); blocks: the groups
+// an interaction's blocks must belong to.
+std::vector<ParameterSpec> contactSpecs();
+std::vector<ParameterSpec> contactModelSpecs();
+std::vector<ParameterSpec> contactPairSpecs();
+std::vector<ParameterSpec> contactEverySpecs();
+ContactSpec parseContact(const PL& deck, const std::vector<SolverSpec>& solvers,
+                         const std::vector<BlockGroupSpec>& blocks, const std::string& file);
+
 // Solver lists.
 std::vector<ParameterSpec> solverListSpecs();
 SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& listName);

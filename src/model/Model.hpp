@@ -10,6 +10,7 @@
 
 #include "parallel/DistributedLayout.hpp"
 #include "core/FieldOperator.hpp"
+#include "core/ForceTerm.hpp"
 #include "core/Material.hpp"
 #include "core/StateStore.hpp"
 #include "model/FieldSet.hpp"
@@ -135,6 +136,14 @@ class Model {
   // 3 per wall: this rank's share of each wall's force on the body in the last enforced step (0 before).
   const std::vector<double>& wallReactions() const { return wallReaction_; }
 
+  // Force terms besides the materials (core/ForceTerm.hpp: contact), added by the model builder. termForce: their
+  // sum (3 per owned node, overwritten) at step `step`, time t, deformed positions y and velocities v; collective.
+  // termOutput: the force density a term gave at the last termForce, by its output name, or null.
+  void addForceTerm(std::unique_ptr<ForceTerm> term);
+  bool hasForceTerms() const { return !forceTerms_.empty(); }
+  void termForce(long step, double t, const double* y, const double* v, double* f);
+  const std::vector<double>* termOutput(const std::string& name) const;
+
   // The nodal fields beside the displacement (model/FieldSet.hpp): addField declares one (its state joins
   // state()); every force evaluation first imposes its conditions of the evaluated time and ghosts it, and each
   // block's view carries its values (FamilyView::fields). requireFieldsRead: InputError naming the first block
@@ -219,6 +228,8 @@ class Model {
   void updateFollowerLoads();
   std::vector<char> prescribed_;
   std::vector<RigidWall> walls_;
+  std::vector<std::unique_ptr<ForceTerm>> forceTerms_;
+  std::map<std::string, std::vector<double>> termOutputs_;  // per term's output name, 3 per owned node
   std::vector<double> wallReaction_, mass_;
   // The clock applyPrescribed sets (mutable: imposing a time's conditions is what advances it).
   mutable double time_ = 0.0, startTime_ = 0.0;

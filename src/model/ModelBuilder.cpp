@@ -1,4 +1,5 @@
 #include "ModelBuilder.hpp"
+#include "model/ContactBuilder.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -353,6 +354,9 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   addConditions(deck, pb, localOf, cloud.spacing);
   pb.model->requireFieldsRead(inputFile);
   addRigidWalls(deck, pb, localOf);
+  std::map<int, double> horizonOf;
+  for (const auto& kv : blocks) horizonOf[kv.first] = kv.second.horizon;
+  addContact(deck, horizonOf, *pb.model);
   return pb;
 }
 

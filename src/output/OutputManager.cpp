@@ -178,6 +178,11 @@ void OutputManager::openWriters(bool append) {
 
 OutputManager::~OutputManager() = default;
 
+double OutputManager::termValue(const std::string& name, int k) const {
+  const std::vector<double>* term = model_.termOutput(name);
+  return term ? (*term)[k] : 0.0;
+}
+
 double OutputManager::nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u,
                                 const std::vector<double>& v, const std::vector<double>& f) const {
   const std::vector<double>& x = model_.coordinates();
@@ -186,7 +191,13 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   if (var == "Force_Density") return f[3 * i + comp];
   if (var == "Force") return f[3 * i + comp] * model_.volume()[i];
   // bodyForce_ holds b at the step's time (onStep fills it first) or zeros.
-  if (var == "Acceleration") return (f[3 * i + comp] + bodyForce_[3 * i + comp]) / model_.density()[i];
+  if (var == "Acceleration")  // the model's force terms (contact) included, as Peridigm's
+    return (f[3 * i + comp] + termValue("Contact_Force_Density", 3 * i + comp) + bodyForce_[3 * i + comp]) /
+           model_.density()[i];
+  if (var == "Contact_Force_Density") return termValue(var, 3 * i + comp);  // 0 without contact
+  if (var == "Kinetic_Energy")  // Peridigm's per-point compute: 1/2 rho V |v|^2
+    return 0.5 * model_.density()[i] * model_.volume()[i] *
+           (v[3 * i] * v[3 * i] + v[3 * i + 1] * v[3 * i + 1] + v[3 * i + 2] * v[3 * i + 2]);
   if (var == "Model_Coordinates") return x[3 * i + comp];
   if (var == "External_Force_Density") return bodyForce_[3 * i + comp];  // Peridigm's name for the body force b
   if (var == "Coordinates") return x[3 * i + comp] + u[3 * i + comp];

@@ -89,6 +89,8 @@ class OutputManager : public StepObserver {
                                  const std::vector<double>& v, const std::vector<double>& f);
   void writeExodusStep(double time, const std::vector<double>& u, const std::vector<double>& v,
                        const std::vector<double>& f);
+  // Component k (3 per owned node) of a force term's output (Model::termOutput), 0 when the model has no such term.
+  double termValue(const std::string& name, int k) const;
   double nodeValue(const std::string& var, int comp, int i, const std::vector<double>& u, const std::vector<double>& v,
                    const std::vector<double>& f) const;
 

@@ -22,40 +22,13 @@ DistributedLayout::~DistributedLayout() = default;
 
 namespace {
 
-// The ghost candidates of every rank: each rank's owned bounding box grown by its largest reach (and half
-// a cell diagonal for partial volumes) is shared; this rank sends each other rank its owned points inside
-// that rank's box. Returns the points received (from: their owners).
+// The ghost candidates of every rank: the owned points within each rank's box grown by its largest reach (and
+// half a cell diagonal for partial volumes). Returns the points received (from: their owners).
 PointCloud ghostCandidates(const Communicator& comm, const PointCloud& owned, const std::vector<double>& reach,
                            const std::array<double, 3>* cell, std::vector<int>* from) {
-  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300}, rmax = 0;
-  for (int i = 0; i < owned.size(); ++i) {
-    rmax = std::max(rmax, reach[i]);
-    for (int d = 0; d < 3; ++d) {
-      lo[d] = std::min(lo[d], owned.x[3 * i + d]);
-      hi[d] = std::max(hi[d], owned.x[3 * i + d]);
-    }
-  }
-  std::vector<double> box(7, 0.0);  // lo - pad, hi + pad, and whether the rank owns any point
-  if (owned.size() > 0) {
-    const double pad = (rmax + (cell ? halfCellDiagonal(*cell) : 0.0)) * (1.0 + 1e-9);
-    for (int d = 0; d < 3; ++d) box[d] = lo[d] - pad, box[3 + d] = hi[d] + pad;
-    box[6] = 1.0;
-  }
-  const std::vector<double> boxes = comm.allGather(box);
-  std::vector<int> index, dest;
-  for (int q = 0; q < comm.size(); ++q) {
-    const double* b = &boxes[7 * q];
-    if (q == comm.rank() || b[6] == 0.0) continue;
-    bool overlaps = true;  // only ranks whose box meets this rank's points are scanned: O(owned x neighbours)
-    for (int d = 0; d < 3; ++d) overlaps = overlaps && hi[d] >= b[d] && lo[d] <= b[3 + d];
-    if (!overlaps) continue;
-    for (int i = 0; i < owned.size(); ++i) {
-      bool inside = true;
-      for (int d = 0; d < 3 && inside; ++d) inside = owned.x[3 * i + d] >= b[d] && owned.x[3 * i + d] <= b[3 + d];
-      if (inside) index.push_back(i), dest.push_back(q);
-    }
-  }
-  return exchangePoints(comm, owned, index, dest, from);
+  double rmax = 0;
+  for (int i = 0; i < owned.size(); ++i) rmax = std::max(rmax, reach[i]);
+  return exchangeNearBoxes(comm, owned, (rmax + (cell ? halfCellDiagonal(*cell) : 0.0)) * (1.0 + 1e-9), from);
 }
 
 // The bounding box of the whole cloud (every rank's points), for keys that do not depend on the partition.

@@ -96,4 +96,33 @@ PointCloud exchangePoints(const Communicator& comm, const PointCloud& points, co
   return out;
 }
 
+PointCloud exchangeNearBoxes(const Communicator& comm, const PointCloud& owned, double pad, std::vector<int>* from) {
+  double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+  for (int i = 0; i < owned.size(); ++i)
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = std::min(lo[d], owned.x[3 * i + d]);
+      hi[d] = std::max(hi[d], owned.x[3 * i + d]);
+    }
+  std::vector<double> box(7, 0.0);  // lo - pad, hi + pad, and whether the rank owns any point
+  if (owned.size() > 0) {
+    for (int d = 0; d < 3; ++d) box[d] = lo[d] - pad, box[3 + d] = hi[d] + pad;
+    box[6] = 1.0;
+  }
+  const std::vector<double> boxes = comm.allGather(box);
+  std::vector<int> index, dest;
+  for (int q = 0; q < comm.size(); ++q) {
+    const double* b = &boxes[7 * q];
+    if (q == comm.rank() || b[6] == 0.0) continue;
+    bool overlaps = true;  // only ranks whose box meets this rank's points are scanned: O(owned x neighbours)
+    for (int d = 0; d < 3; ++d) overlaps = overlaps && hi[d] >= b[d] && lo[d] <= b[3 + d];
+    if (!overlaps) continue;
+    for (int i = 0; i < owned.size(); ++i) {
+      bool inside = true;
+      for (int d = 0; d < 3 && inside; ++d) inside = owned.x[3 * i + d] >= b[d] && owned.x[3 * i + d] <= b[3 + d];
+      if (inside) index.push_back(i), dest.push_back(q);
+    }
+  }
+  return exchangePoints(comm, owned, index, dest, from);
+}
+
 }  // namespace pf

@@ -15,6 +15,12 @@ namespace pf {
 PointCloud exchangePoints(const Communicator& comm, const PointCloud& points, const std::vector<int>& index,
                           const std::vector<int>& dest, std::vector<int>* from = nullptr);
 
+// Collective. Each rank's bounding box of its points grown by pad is shared; this rank sends every other rank its
+// points inside that rank's box. Returns the points received (from: their owners), as exchangePoints. The
+// neighbour points a rank needs, for any reach up to pad, without any rank seeing the whole cloud.
+PointCloud exchangeNearBoxes(const Communicator& comm, const PointCloud& points, double pad,
+                             std::vector<int>* from = nullptr);
+
 // The same cloud without points: its metadata and generated node-set names only.
 PointCloud withoutPoints(const PointCloud& cloud);
 

@@ -64,12 +64,36 @@ struct ForceTimer {
   }
 };
 
-// The acceleration the next half step uses: zero on prescribed components, (f + b) / rho elsewhere.
-void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& b,
-                         std::vector<double>& a) {
+// The acceleration the next half step uses: zero on prescribed components, (f + f_terms + b) / rho elsewhere
+// (f_terms: the model's force terms, contact; empty without them).
+void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& terms,
+                  const std::vector<double>& b, std::vector<double>& a) {
   const std::vector<char>& fixed = model.prescribedMask();
-  for (std::size_t k = 0; k < a.size(); ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
+  for (std::size_t k = 0; k < a.size(); ++k)
+    a[k] = fixed[k] ? 0.0 : (f[k] + (terms.empty() ? 0.0 : terms[k]) + b[k]) / model.density()[k / 3];
 }
+
+// The model's force terms (contact) for the integrator: their sum ft at the step's positions and half-step
+// velocities, the positions formed as Peridigm forms them, x + u_n + dt v_n+1/2 (its contact sees those bits).
+class TermForces {
+ public:
+  TermForces(const Model& model, bool on) : ft(on ? model.numDofs() : 0), x_(model.coordinates()), y_(ft.size()) {}
+  bool on() const { return !ft.empty(); }
+  double operator[](std::size_t k) const { return ft.empty() ? 0.0 : ft[k]; }
+  void atStart(Model& model, double t, const std::vector<double>& u, const std::vector<double>& v) {
+    for (std::size_t k = 0; k < y_.size(); ++k) y_[k] = x_[k] + u[k];
+    model.termForce(0, t, y_.data(), v.data(), ft.data());
+  }
+  void atStep(Model& model, long s, double t, double dt, const std::vector<double>& uPrev, const std::vector<double>& v) {
+    for (std::size_t k = 0; k < y_.size(); ++k) y_[k] = x_[k] + uPrev[k] + dt * v[k];
+    pf::atStep(CheckPoint{"Verlet", s, t}, [&] { model.termForce(s, t, y_.data(), v.data(), ft.data()); });
+  }
+  std::vector<double> ft;  // 3 per owned node; empty without terms
+
+ private:
+  const std::vector<double>& x_;
+  std::vector<double> y_;
+};
 
 }  // namespace
 
@@ -142,6 +166,16 @@ std::unique_ptr<ExplicitFieldStep> VerletSolver::heatStep(Model& model) const {
   return std::make_unique<ExplicitFieldStep>(model, "Temperature", opt_.where);
 }
 
+long VerletSolver::stepCount(double duration, double& dt, const SolverResume* resume) const {
+  if (resume) {  // the interrupted run's step (its stable-step estimate may differ in the last bit at another np)
+    dt = resume->scalar("dt");
+    return static_cast<long>(resume->scalar("steps"));
+  }
+  const long steps = std::max(1L, static_cast<long>(std::ceil(duration / dt - 1e-9)));
+  if (opt_.fixedDt <= 0) dt = duration / steps;  // land exactly on the end time
+  return steps;
+}
+
 void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                        const std::vector<double>& times, StepObserver& observer) {
   const SolverResume* resume = takeResume();
@@ -151,12 +185,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   const bool mechanics = advances("Displacement");
   std::unique_ptr<ExplicitFieldStep> heat = heatStep(model);
   double dt = timeStep(model, heat.get());
-  long steps = std::max(1L, static_cast<long>(std::ceil((t1 - t0) / dt - 1e-9)));
-  if (opt_.fixedDt <= 0) dt = (t1 - t0) / steps;  // land exactly on t1
-  if (resume) {  // the interrupted run's step (its stable-step estimate may differ in the last bit at another np)
-    dt = resume->scalar("dt");
-    steps = static_cast<long>(resume->scalar("steps"));
-  }
+  long steps = stepCount(t1 - t0, dt, resume);
   const bool root = model.layout().rank() == 0;
   if (root) std::printf("Verlet: dt = %.6g s, %ld steps\n", dt, steps);
   if (root && heat)
@@ -166,17 +195,21 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double>& rho = model.density();
   std::vector<double> f(n), b(n), a(n), uPrev(n);
-  // f is all a later step needs of this one besides u, v and the committed state (a = (f + b) / rho).
-  const SolverCarry carry{{{"Force_Density", &f}}, {{"dt", dt}, {"steps", static_cast<double>(steps)}}};
+  TermForces terms(model, mechanics && model.hasForceTerms());
+  // f and the terms' ft are all a later step needs of this one besides u, v and the committed state.
+  SolverCarry carry{{{"Force_Density", &f}}, {{"dt", dt}, {"steps", static_cast<double>(steps)}}};
+  if (terms.on()) carry.vectors.push_back({"Force_Terms", &terms.ft});
   if (resume) {
     f = resume->vector("Force_Density");
+    if (terms.on()) terms.ft = resume->vector("Force_Terms");
     model.bodyForce(resume->time, b.data());
   } else {
     model.applyPrescribed(t0, u.data());
     evaluate(model, heat.get(), 0, t0, 0.0, u, f);
+    if (terms.on()) terms.atStart(model, t0, u, v);
     model.bodyForce(t0, b.data());
   }
-  if (mechanics) acceleration(model, f, b, a);  // a thermal-only run leaves u and v alone
+  if (mechanics) acceleration(model, f, terms.ft, b, a);  // a thermal-only run leaves u and v alone
   if (!resume) {
     requireFiniteState(model, CheckPoint{"Verlet", 0, t0}, u, v, f,
                        finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
@@ -200,12 +233,13 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) / dt;
     forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, u, f); });
+    if (terms.on()) terms.atStep(model, s, t, dt, uPrev, v);
     if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
     for (int k = 0; k < n; ++k) {
-      a[k] = fixed[k] || !mechanics ? 0.0 : (f[k] + b[k]) / rho[k / 3];
+      a[k] = fixed[k] || !mechanics ? 0.0 : (f[k] + terms[k] + b[k]) / rho[k / 3];
       if (!fixed[k]) v[k] += 0.5 * dt * a[k];
-      probe += u[k] + v[k] + f[k];
+      probe += u[k] + v[k] + f[k] + terms[k];
     }
     requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();

@@ -40,6 +40,9 @@ class VerletSolver : public Solver {
  private:
   // Fixed dt, or Safety Factor x the stable step (the mechanics', or the field's in a thermal-only run).
   double timeStep(const Model& model, const ExplicitFieldStep* heat) const;
+  // The number of steps over `duration` at dt (dt then lands on the end time unless fixed), or a resumed run's dt
+  // and count.
+  long stepCount(double duration, double& dt, const SolverResume* resume) const;
   // The Temperature field's explicit step when the deck has Verlet advance it (the field then marked solved), or null.
   std::unique_ptr<ExplicitFieldStep> heatStep(Model& model) const;
   void evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt, std::vector<double>& u,

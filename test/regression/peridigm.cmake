@@ -98,7 +98,10 @@ set(peridigm_suite_cases
   "MultipleHorizons MultipleHorizons.xml MultipleHorizons MultipleHorizons.comp"
   "Body_Force__QS_NOX Body_Force_QS_NOX.xml Body_Force_QS_NOX Body_Force.comp"
   "ThermalExpansionCube ThermalExpansionCube.xml ThermalExpansionCube ThermalExpansionCube.comp"
-  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp")
+  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp"
+  "Contact_2x1x1 Contact_2x1x1.xml Contact_2x1x1 Contact_2x1x1.comp"
+  "Contact_Friction Contact_Friction.xml Contact_Friction Contact_Friction.comp"
+  "Contact_Friction_Time_Dependent_Coefficient Contact_Friction.xml Contact_Friction Contact_Friction.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)

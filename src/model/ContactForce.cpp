@@ -1,0 +1,109 @@
+#include "ContactForce.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "discretization/NeighborSearch.hpp"
+
+namespace pf {
+
+ContactForce::ContactForce(const DistributedLayout& layout, std::vector<double> volume, std::vector<int> block,
+                           ContactSetup setup)
+    : layout_(layout), volume_(std::move(volume)), block_(std::move(block)),
+      setup_(std::move(setup)), ghosts_(layout) {
+  for (int b : block_) horizon_.push_back(setup_.horizonOf.at(b));
+}
+
+int ContactForce::lawBetween(int blockA, int blockB) const {
+  const auto it = setup_.lawOf.find({std::min(blockA, blockB), std::max(blockA, blockB)});
+  return it == setup_.lawOf.end() ? -1 : it->second;
+}
+
+void ContactForce::search(const std::vector<double>& y) {
+  const int numOwned = layout_.numOwned();
+  // The owned points of blocks that interact with some block: the only ones that send, search and are found.
+  std::vector<char> active(numOwned, 0);
+  std::map<int, bool> interacts;
+  for (const auto& kv : setup_.lawOf) interacts[kv.first.first] = interacts[kv.first.second] = true;
+  PointCloud mine;
+  mine.numGlobal = layout_.numGlobal();
+  std::vector<int> activeOwned;
+  for (int i = 0; i < numOwned; ++i) {
+    if (!interacts.count(block_[i])) continue;
+    active[i] = 1;
+    activeOwned.push_back(i);
+    mine.gid.push_back(layout_.gids()[i]);
+    mine.x.insert(mine.x.end(), y.begin() + 3 * i, y.begin() + 3 * i + 3);
+    mine.volume.push_back(volume_[i]);
+    mine.block.push_back(block_[i]);
+  }
+  ghosts_.rebuild(mine, setup_.searchRadius * (1.0 + 1e-9));
+  const PointCloud& g = ghosts_.ghosts();
+  // Candidates within the search radius: the active owned points first (the queries), then the ghosts.
+  std::vector<double> pts = mine.x;
+  pts.insert(pts.end(), g.x.begin(), g.x.end());
+  const int numActive = static_cast<int>(activeOwned.size());
+  BondFamily near;
+  buildFamilies(pts, numActive, std::vector<double>(numActive, setup_.searchRadius), near);
+  const BondFamily& fam = layout_.family();
+  offsets_.assign(numOwned + 1, 0);
+  partners_.clear();
+  partnerLaw_.clear();
+  std::vector<std::pair<int, int>> row;  // (gid, contact-point index) of one point's partners
+  std::vector<int> bonded;               // the gids of its bond family, sorted
+  for (int a = 0, i = 0; i < numOwned; ++i) {
+    offsets_[i] = static_cast<int>(partners_.size());
+    if (!active[i]) continue;
+    bonded.clear();
+    for (int k = fam.offsets[i]; k < fam.offsets[i + 1]; ++k) bonded.push_back(layout_.gids()[fam.neighbors[k]]);
+    std::sort(bonded.begin(), bonded.end());
+    row.clear();
+    for (int k = near.offsets[a]; k < near.offsets[a + 1]; ++k) {
+      const int c = near.neighbors[k];
+      const bool owned = c < numActive;
+      const int gid = owned ? mine.gid[c] : g.gid[c - numActive];
+      const int blk = owned ? mine.block[c] : g.block[c - numActive];
+      if (lawBetween(block_[i], blk) < 0 || std::binary_search(bonded.begin(), bonded.end(), gid)) continue;
+      row.push_back({gid, owned ? activeOwned[c] : numOwned + (c - numActive)});
+    }
+    std::sort(row.begin(), row.end());
+    for (const auto& [gid, c] : row) {
+      partners_.push_back(c);
+      partnerLaw_.push_back(lawBetween(block_[i], c < numOwned ? block_[c] : g.block[c - numOwned]));
+    }
+    ++a;
+  }
+  offsets_[numOwned] = static_cast<int>(partners_.size());
+  ghostHorizon_.clear();
+  for (int b : g.block) ghostHorizon_.push_back(setup_.horizonOf.at(b));
+  searched_ = true;
+}
+
+void ContactForce::force(long step, double t, const double* y, const double* v, double* f) {
+  const int numOwned = layout_.numOwned();
+  // Peridigm searches at the start and before every Search Frequency-th step moves the points, at the positions
+  // the previous step ended with; a resumed run searches at its first step's.
+  if (!searched_ || step % setup_.searchFrequency == 0)
+    search(searched_ && step > 0 ? yPrevious_ : std::vector<double>(y, y + 3 * static_cast<std::size_t>(numOwned)));
+  yPrevious_.assign(y, y + 3 * static_cast<std::size_t>(numOwned));
+  ownedYV_.resize(6 * static_cast<std::size_t>(numOwned));
+  for (int i = 0; i < numOwned; ++i)
+    for (int c = 0; c < 3; ++c) ownedYV_[6 * i + c] = y[3 * i + c], ownedYV_[6 * i + 3 + c] = v[3 * i + c];
+  const PointCloud& g = ghosts_.ghosts();
+  ghostYV_.resize(6 * g.gid.size());
+  ghosts_.update(ownedYV_.data(), ghostYV_.data(), 6);
+  std::vector<double> mu(setup_.laws.size());
+  for (std::size_t l = 0; l < mu.size(); ++l) mu[l] = setup_.laws[l].frictionAt(t);
+  std::fill(f, f + 3 * static_cast<std::size_t>(numOwned), 0.0);
+  for (int i = 0; i < numOwned; ++i)
+    for (int k = offsets_[i]; k < offsets_[i + 1]; ++k) {
+      const int c = partners_[k];
+      const bool owned = c < numOwned;
+      const double* yv = owned ? &ownedYV_[6 * c] : &ghostYV_[6 * (c - numOwned)];
+      const ContactPair p{&ownedYV_[6 * i], yv, &ownedYV_[6 * i + 3], yv + 3, owned ? volume_[c] : g.volume[c - numOwned],
+                          horizon_[i], owned ? horizon_[c] : ghostHorizon_[c - numOwned]};
+      addShortRangeForce(setup_.laws[partnerLaw_[k]].law, mu[partnerLaw_[k]], p, &f[3 * i]);
+    }
+}
+
+}  // namespace pf

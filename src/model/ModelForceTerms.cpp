@@ -1,0 +1,27 @@
+// Model's force terms besides the materials (core/ForceTerm.hpp): their sum for the solvers, each one's output.
+#include <algorithm>
+
+#include "Model.hpp"
+
+namespace pf {
+
+void Model::addForceTerm(std::unique_ptr<ForceTerm> term) {
+  termOutputs_[term->outputName()].assign(numDofs(), 0.0);
+  forceTerms_.push_back(std::move(term));
+}
+
+void Model::termForce(long step, double t, const double* y, const double* v, double* f) {
+  std::fill(f, f + numDofs(), 0.0);
+  for (const std::unique_ptr<ForceTerm>& term : forceTerms_) {
+    std::vector<double>& out = termOutputs_[term->outputName()];
+    term->force(step, t, y, v, out.data());
+    for (int k = 0; k < numDofs(); ++k) f[k] += out[k];
+  }
+}
+
+const std::vector<double>* Model::termOutput(const std::string& name) const {
+  const auto it = termOutputs_.find(name);
+  return it == termOutputs_.end() ? nullptr : &it->second;
+}
+
+}  // namespace pf

@@ -1,0 +1,29 @@
+# Contact (issue 34; model/ContactForce.hpp, docs/contact.md). Peridigm's contact decks are in peridigm.cmake.
+set(CONTACT_BIN ${CMAKE_CURRENT_BINARY_DIR}/regression)
+foreach(np 1 2)
+  # Two points meeting head-on: velocity v0 cos(w t) while in contact, closed form (check_pair.py); at np 2 each
+  # point's partner is a moving ghost of the other rank.
+  periforge_run(contact_pair_np${np} ${REG}/contact/pair.xml ${np})
+  periforge_check(contact_pair_np${np}_check contact_pair_np${np}
+    ${PY} ${REG}/contact/check_pair.py ${CONTACT_BIN}/contact_pair_np${np}/pair.e)
+  # Two cubes meeting off-centre with friction: total momentum conserved to round-off, the cubes rebound.
+  periforge_run(contact_two_cubes_np${np} ${REG}/contact/two_cubes.xml ${np})
+  periforge_check(contact_two_cubes_np${np}_momentum contact_two_cubes_np${np}
+    ${PY} ${REG}/contact/check_momentum.py ${CONTACT_BIN}/contact_two_cubes_np${np}/two_cubes.e)
+endforeach()
+periforge_check(contact_two_cubes_np1_vs_np2 "contact_two_cubes_np1;contact_two_cubes_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CONTACT_BIN}/contact_two_cubes_np2/two_cubes.e
+  ${CONTACT_BIN}/contact_two_cubes_np1/two_cubes.e ${REG}/contact/np_agreement.comp)
+
+# Restart with contact forces acting: killed after a checkpoint, restarted at the same rank count, the same rs.e and
+# rs.csv as an uninterrupted run, byte for byte (restart.cmake's harness).
+foreach(np 1 2)
+  add_test(NAME restart_contact_kill_np${np}_np${np}
+           COMMAND ${PY} ${PROJECT_SOURCE_DIR}/test/regression/restart/run_restart.py kill ${REG}/contact/restart_contact.xml
+                   ${np} ${np} ${PERIFORGE_EXE} ${MPIRUN})
+  set_tests_properties(restart_contact_kill_np${np}_np${np} PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS ${np})
+endforeach()
+
+# The Contact list's input errors: one line naming the file and the parameter, no output.
+add_test(NAME contact_input_errors COMMAND ${PY} ${REG}/contact/run_contact_errors.py ${PERIFORGE_EXE} ${REG}/contact/pair.xml)
+set_tests_properties(contact_input_errors PROPERTIES LABELS "regression")
