@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/BondFilter.hpp"
 #include "core/Expression.hpp"
 #include "core/InfluenceFunction.hpp"
 #include "core/MaterialEntry.hpp"
@@ -27,6 +28,7 @@ struct DiscretizationSpec {
   Influence influence = Influence::One;
   bool partialVolume = false;
   bool omitBondsBetweenBlocks = false;  // Peridigm's "Omit Bonds Between Blocks" = "All"
+  BondFilters bondFilters;              // Peridigm's "Bond Filters": no bond crosses one (empty: none)
   // PdQuickGrid without "NeighborhoodType" (and without Partial Volume): Peridigm's default neighbourhood,
   // a box of round(δ/dx) cells per direction (its NoOp norm, QuickGrid.cxx); else the ball |ξ| <= δ.
   bool boxNeighbourhood = false;

@@ -318,10 +318,12 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   // A PdQuickGrid cloud is block 1 only: its horizon sets the box neighbourhood.
   const double h1 = blocks.count(1) ? blocks.at(1).horizon : blocks.begin()->second.horizon;
   const std::array<double, 3> box = quickGridBox(deck.discretization, h1);
-  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence,
-                                                    cloud.partialVolume ? &cloud.cell : nullptr,
-                                                    deck.discretization.boxNeighbourhood ? &box : nullptr,
-                                                    deck.discretization.omitBondsBetweenBlocks);
+  BondRules rules;
+  rules.cell = cloud.partialVolume ? &cloud.cell : nullptr;
+  rules.box = deck.discretization.boxNeighbourhood ? &box : nullptr;
+  rules.omitBondsBetweenBlocks = deck.discretization.omitBondsBetweenBlocks;
+  rules.filters = &deck.discretization.bondFilters;
+  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence, rules);
   std::vector<double> x = layout->releaseCoordinates(), volume = layout->releaseVolumes();
   requireDistinctPoints(*layout, x, volume, cloud.spacing, inputFile);
   const std::vector<int>& gids = layout->gids();

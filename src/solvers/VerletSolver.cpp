@@ -22,8 +22,9 @@ SolverEntry VerletSolver::entry() {
   e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
   e.dynamic = true;
   e.mayAlsoSolve = {"Temperature"};
-  e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate; above that estimate "
-                                      "a warning, above 2 × it an input error").positive(),
+  e.parameters = {S::real("Fixed dt", "time step; the run takes floor((Final Time − Initial Time) / dt) steps, as "
+                                      "Peridigm; default: `Safety Factor` × the stable step estimate, shortened to end on "
+                                      "Final Time; above that estimate a warning, above 2 × it an input error").positive(),
                   S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ); above 1 a warning, above 2 "
                                            "an input error (as `Fixed dt`)").byDefault("0.8").positive(),
                   S::flag("Allow Unstable Time Step",
@@ -83,6 +84,17 @@ double VerletSolver::stableTimeStep(const Model& model, bool freeOnly) {
   if (freeOnly && w2 == 0.0) return std::numeric_limits<double>::infinity();  // no free point: nothing to go unstable
   return w2 > 0 ? 2.0 / std::sqrt(w2) : 1.0;
 }
+
+namespace {
+
+// A Fixed dt takes floor((t1 - t0) / dt) steps, as Peridigm (Peridigm.cpp, executeExplicit): a quotient that
+// rounds below an integer (0.01 / 2e-5 = 499.99999999999994) takes one step less, ending before t1. The
+// default step is shortened to land on t1 (ceil, a quotient within 1e-9 above an integer taken as it).
+long stepCount(double t0, double t1, double dt, bool fixed) {
+  return std::max(1L, static_cast<long>(fixed ? std::floor((t1 - t0) / dt) : std::ceil((t1 - t0) / dt - 1e-9)));
+}
+
+}  // namespace
 
 double VerletSolver::timeStep(const Model& model, const ExplicitFieldStep* heat) const {
   if (opt_.fixedDt > 0) return opt_.fixedDt;
@@ -151,7 +163,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   const bool mechanics = advances("Displacement");
   std::unique_ptr<ExplicitFieldStep> heat = heatStep(model);
   double dt = timeStep(model, heat.get());
-  long steps = std::max(1L, static_cast<long>(std::ceil((t1 - t0) / dt - 1e-9)));
+  long steps = stepCount(t0, t1, dt, opt_.fixedDt > 0);
   if (opt_.fixedDt <= 0) dt = (t1 - t0) / steps;  // land exactly on t1
   if (resume) {  // the interrupted run's step (its stable-step estimate may differ in the last bit at another np)
     dt = resume->scalar("dt");

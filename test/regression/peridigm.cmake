@@ -98,7 +98,10 @@ set(peridigm_suite_cases
   "MultipleHorizons MultipleHorizons.xml MultipleHorizons MultipleHorizons.comp"
   "Body_Force__QS_NOX Body_Force_QS_NOX.xml Body_Force_QS_NOX Body_Force.comp"
   "ThermalExpansionCube ThermalExpansionCube.xml ThermalExpansionCube ThermalExpansionCube.comp"
-  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp")
+  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp"
+  "PrecrackedPlate PrecrackedPlate.xml PrecrackedPlate PrecrackedPlate.comp"
+  "ShellBondFilter__QuadBondFilter QuadBondFilter.yaml QuadBondFilter QuadBondFilter.comp"
+  "ShellBondFilter__TriBondFilter TriBondFilter.yaml TriBondFilter TriBondFilter.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)
