@@ -36,7 +36,9 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
 // Damage Models (optional; before Blocks, which name them).
 std::vector<ParameterSpec> criticalStretchSpecs();
 std::vector<ParameterSpec> maximumPrincipalStressSpecs();
-std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file);
+std::vector<ParameterSpec> timeDependentCriticalStretchSpecs();
+std::vector<ParameterSpec> initialDamageSpecs();
+std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file, const std::string& dir);
 
 // Boundary Conditions: node sets first (a condition may name a set defined after it), then conditions.
 std::vector<ParameterSpec> regionSpecs();

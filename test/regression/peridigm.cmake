@@ -101,7 +101,9 @@ set(peridigm_suite_cases
   "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp"
   "PrecrackedPlate PrecrackedPlate.xml PrecrackedPlate PrecrackedPlate.comp"
   "ShellBondFilter__QuadBondFilter QuadBondFilter.yaml QuadBondFilter QuadBondFilter.comp"
-  "ShellBondFilter__TriBondFilter TriBondFilter.yaml TriBondFilter TriBondFilter.comp")
+  "ShellBondFilter__TriBondFilter TriBondFilter.yaml TriBondFilter TriBondFilter.comp"
+  "InitialDamage InitialDamage.xml InitialDamage InitialDamage.comp"
+  "BondBreakingInitialVelocity_TimeDependentCS BondBreakingInitialVelocity.xml BondBreakingInitialVelocity BondBreakingInitialVelocity.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)
