@@ -1,6 +1,7 @@
 #include "BondCutter.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
