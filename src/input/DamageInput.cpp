@@ -1,6 +1,10 @@
-// The optional "Damage Models" list -> DamageModelSpecs. Peridigm's bond-breaking model "Critical Stretch" and
-// Li & Geng's "Maximum Principal Stress" (seed 003, Eqs. 49-51; correspondence models only, ModelBuilder.cpp);
-// a block uses one through its "Damage Model" parameter (BlocksInput.cpp).
+// The optional "Damage Models" list -> DamageModelSpecs. Peridigm's bond-breaking models "Critical Stretch",
+// "Time Dependent Critical Stretch" (Peridigm_UserDefinedTimeDependentCriticalStretchDamageModel.cpp) and "Initial
+// Damage" (Peridigm_InitialDamageModel.cpp), and Li & Geng's "Maximum Principal Stress" (seed 003, Eqs. 49-51;
+// correspondence models only, ModelBuilder.cpp); a block uses one through its "Damage Model" parameter
+// (BlocksInput.cpp).
+#include <cmath>
+
 #include "Sections.hpp"
 
 namespace pf {
@@ -9,6 +13,16 @@ namespace {
 using S = ParameterSpec;
 const char* const kCriticalStretch = "Critical Stretch";
 const char* const kMaxPrincipal = "Maximum Principal Stress";
+const char* const kTimeDependent = "Time Dependent Critical Stretch";
+const char* const kInitialDamage = "Initial Damage";
+
+ParameterSpec thermalExpansionSpec() {
+  return S::real("Thermal Expansion Coefficient",
+                 "Peridigm's: the stretch tested is less the thermal strain alpha dT. Periforge always tests the "
+                 "stretch less the block material's own thermal strain, so this must equal the material's "
+                 "`Thermal Expansion Coefficient` (an input error otherwise)");
+}
+
 }  // namespace
 
 std::vector<ParameterSpec> criticalStretchSpecs() {
@@ -17,10 +31,24 @@ std::vector<ParameterSpec> criticalStretchSpecs() {
                   "s_c: a bond breaks, for good, once (|y_j − y_i| − |ξ|)/|ξ| > s_c (tension only, as Peridigm)")
               .need()
               .positive(),
-          S::real("Thermal Expansion Coefficient",
-                  "Peridigm's: the stretch tested is less the thermal strain alpha dT. Periforge always tests the "
-                  "stretch less the block material's own thermal strain, so this must equal the material's "
-                  "`Thermal Expansion Coefficient` (an input error otherwise)")};
+          thermalExpansionSpec()};
+}
+
+std::vector<ParameterSpec> timeDependentCriticalStretchSpecs() {
+  return {S::text("Damage Model", "`Time Dependent Critical Stretch` (Peridigm's name)").need(),
+          S::text("Time Dependent Critical Stretch",
+                  "s_c(t): an expression in `t` (Peridigm's RTCompiler language, as a boundary condition's `Value`; "
+                  "`value = ` is prepended unless it assigns `value`), evaluated at the time of each force "
+                  "evaluation; a bond breaks, for good, once its stretch exceeds s_c(t) then")
+              .need(),
+          thermalExpansionSpec()};
+}
+
+std::vector<ParameterSpec> initialDamageSpecs() {
+  return {S::text("Damage Model",
+                  "`Initial Damage` (Peridigm's): the bonds crossing its sub-list `Bond Filters` (Discretization's types, "
+                  "read once at set-up) start broken; no other bond ever breaks")
+              .need()};
 }
 
 std::vector<ParameterSpec> maximumPrincipalStressSpecs() {
@@ -33,7 +61,23 @@ std::vector<ParameterSpec> maximumPrincipalStressSpecs() {
               .positive()};
 }
 
-std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file) {
+namespace {
+
+// s_c(t) compiled once; x, y, z are not Peridigm's variables there (its RTC function knows t and value only).
+DamageModelSpec timeDependent(const PL& d, const std::string& name, const std::string& file, const std::string& path) {
+  const ParameterValues v = readList(d, timeDependentCriticalStretchSpecs(), {}, file, path);
+  DamageModelSpec spec{name, kTimeDependent, 0.0, 0.0};
+  const std::string where = file + ": " + path + "/Time Dependent Critical Stretch";
+  spec.stretchOfTime = std::make_shared<const Expression>(v.text("Time Dependent Critical Stretch"), where);
+  if (spec.stretchOfTime->dependsOnSpace())
+    fail(file, path + "/Time Dependent Critical Stretch", "a function of t only (x, y, z are not its variables)");
+  spec.thermalExpansion = v.get("Thermal Expansion Coefficient", -1.0);
+  return spec;
+}
+
+}  // namespace
+
+std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file, const std::string& dir) {
   std::vector<DamageModelSpec> out;
   if (!deck.isSublist("Damage Models")) return out;
   const PL& list = deck.sublist("Damage Models");
@@ -50,9 +94,21 @@ std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string
       out.push_back(DamageModelSpec{name, model, 0.0, v.get("Tensile Strength")});
       continue;
     }
+    if (model == kTimeDependent) {
+      out.push_back(timeDependent(d, name, file, path));
+      continue;
+    }
+    if (model == kInitialDamage) {
+      readList(d, initialDamageSpecs(), {"Bond Filters"}, file, path);
+      DamageModelSpec spec{name, model, HUGE_VAL, 0.0};
+      spec.initialBreaks = parseBondFilters(requireSublist(d, "Bond Filters", file, path), file, path + "/Bond Filters",
+                                            dir, true);
+      out.push_back(spec);
+      continue;
+    }
     if (model != kCriticalStretch)
-      fail(file, path, "unknown 'Damage Model' = '" + model + "' (known: '" + kCriticalStretch + "', '" +
-                           kMaxPrincipal + "')");
+      fail(file, path, "unknown 'Damage Model' = '" + model + "' (known: " +
+                           joinNames({kCriticalStretch, kTimeDependent, kInitialDamage, kMaxPrincipal}) + ")");
     const ParameterValues v = readList(d, criticalStretchSpecs(), {}, file, path);
     DamageModelSpec spec{name, model, v.get("Critical Stretch"), 0.0};
     spec.thermalExpansion = v.get("Thermal Expansion Coefficient", -1.0);

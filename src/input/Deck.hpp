@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/BondFilter.hpp"
 #include "core/Expression.hpp"
 #include "core/InfluenceFunction.hpp"
 #include "core/MaterialEntry.hpp"
@@ -27,6 +28,7 @@ struct DiscretizationSpec {
   Influence influence = Influence::One;
   bool partialVolume = false;
   bool omitBondsBetweenBlocks = false;  // Peridigm's "Omit Bonds Between Blocks" = "All"
+  BondFilters bondFilters;              // Peridigm's "Bond Filters": no bond crosses one (empty: none)
   // PdQuickGrid without "NeighborhoodType" (and without Partial Volume): Peridigm's default neighbourhood,
   // a box of round(δ/dx) cells per direction (its NoOp norm, QuickGrid.cxx); else the ball |ξ| <= δ.
   bool boxNeighbourhood = false;
@@ -58,14 +60,19 @@ struct MaterialSpec {
 };
 
 // A "Damage Models" entry. Peridigm's "Critical Stretch": a bond breaks, for good, once its stretch
-// (|y_j - y_i| - |xi|) / |xi| exceeds criticalStretch (core/BondDamage.hpp); Li & Geng's "Maximum Principal
-// Stress": once the mean of its ends' largest principal Cauchy stress exceeds tensileStrength (core/StressDamage.hpp).
+// (|y_j - y_i| - |xi|) / |xi| exceeds criticalStretch (core/BondDamage.hpp); its "Time Dependent Critical
+// Stretch": the same with s_c = stretchOfTime(t) at the evaluated time; its "Initial Damage": the bonds that
+// cross initialBreaks start broken and no other bond breaks (criticalStretch = infinity); Li & Geng's "Maximum
+// Principal Stress": once the mean of its ends' largest principal Cauchy stress exceeds tensileStrength
+// (core/StressDamage.hpp).
 struct DamageModelSpec {
   std::string name;                   // the sub-list name in Damage Models
-  std::string model;                  // "Critical Stretch" or "Maximum Principal Stress"
-  double criticalStretch = 0.0;       // > 0 for Critical Stretch, else 0
+  std::string model;                  // one of the four names above
+  double criticalStretch = 0.0;       // > 0 for Critical Stretch (infinity for Initial Damage), else 0
   double tensileStrength = 0.0;       // > 0 for Maximum Principal Stress, else 0
-  double thermalExpansion = -1.0;     // Critical Stretch's Thermal Expansion Coefficient; < 0: not given
+  double thermalExpansion = -1.0;     // (Time Dependent) Critical Stretch's Thermal Expansion Coefficient; < 0: not given
+  std::shared_ptr<const Expression> stretchOfTime;  // Time Dependent Critical Stretch: s_c(t), else null
+  BondFilters initialBreaks;          // Initial Damage's Bond Filters (triangles of an Exodus Mesh's elements)
 };
 
 struct BlockGroupSpec {

@@ -107,7 +107,7 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
   deck.solvers = solvers(p, file);
   deck.discretization = parseDiscretization(requireSublist(p, "Discretization", file, "top level"), file, directory);
   deck.materials = parseMaterials(p, file);
-  deck.damageModels = parseDamageModels(p, file);
+  deck.damageModels = parseDamageModels(p, file, directory);
   deck.blocks = parseBlocks(p, deck.materials, deck.damageModels, file);
   requireOneThickness(deck);
   applyDefaultLayerWidth(deck.discretization, deck.maxHorizon(), file);

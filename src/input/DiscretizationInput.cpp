@@ -179,10 +179,9 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   const std::string type = getText(d, "Type", "");
   if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
     fail(file, path, "'Type' = '" + type + "' is not one of " + joinNames(kTypes));
-  const std::vector<std::string> sublists = type == "PdQuickGrid" ? std::vector<std::string>{"TensorProduct3DMeshGenerator"}
-                                           : type == "Text File" || type == "Cylinder" || type == "Exodus"
-                                               ? std::vector<std::string>{}
-                                                                   : std::vector<std::string>{"Holes"};
+  std::vector<std::string> sublists = {"Bond Filters"};
+  if (type == "PdQuickGrid") sublists.push_back("TensorProduct3DMeshGenerator");
+  if (type == "Rectangle With Holes" || type == "Box With Holes") sublists.push_back("Holes");
   const ParameterValues v = readList(d, discretizationSpecs(type), sublists, file, path);
   DiscretizationSpec s;
   if (type == "PdQuickGrid") {
@@ -225,6 +224,8 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   s.influence = influenceFromName(v.text("Influence Function"), file + ": " + path);
   s.partialVolume = v.flag("Partial Volume");
   s.omitBondsBetweenBlocks = v.text("Omit Bonds Between Blocks") == "All";
+  if (d.isSublist("Bond Filters"))
+    s.bondFilters = parseBondFilters(d.sublist("Bond Filters"), file, path + "/Bond Filters", dir, false);
   s.boxNeighbourhood = s.type == DiscretizationSpec::Type::QuickGrid && !v.has("NeighborhoodType") && !s.partialVolume;
   if (s.partialVolume && (s.type == DiscretizationSpec::Type::TextFile || s.type == DiscretizationSpec::Type::Exodus))
     fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "

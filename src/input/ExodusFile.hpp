@@ -30,8 +30,10 @@ struct ExodusSummary {
 
 class ExodusFile {
  public:
-  // inputFile: the deck (for messages); path: the resolved mesh file name.
-  ExodusFile(const std::string& path, const std::string& inputFile);
+  // inputFile: the deck (for messages); path: the resolved mesh file name; parameter: the deck parameter that
+  // names it (for messages).
+  ExodusFile(const std::string& path, const std::string& inputFile,
+             const std::string& parameter = "Discretization/Input Mesh File");
   ~ExodusFile();
   ExodusFile(const ExodusFile&) = delete;
   ExodusFile& operator=(const ExodusFile&) = delete;
@@ -40,10 +42,10 @@ class ExodusFile {
   int id() const { return exoid_; }
   // An ExodusII return code: negative is an error (an InputError saying which call on which file).
   void check(int status, const char* call) const;
-  [[noreturn]] void fail(const std::string& msg) const;  // "deck: Discretization/Input Mesh File: mesh: msg"
+  [[noreturn]] void fail(const std::string& msg) const;  // "deck: <parameter>: mesh file 'path': msg"
 
  private:
-  std::string path_, inputFile_;
+  std::string path_, inputFile_, parameter_;
   int exoid_ = -1;
   ExodusSummary summary_;
 };

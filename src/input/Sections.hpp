@@ -17,6 +17,11 @@ std::vector<ParameterSpec> holeSpecs(bool box);
 DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, const std::string& dir);
 // Layers without a "Layer Width" take the largest block horizon (maxHorizon); none: an InputError.
 void applyDefaultLayerWidth(DiscretizationSpec& d, double maxHorizon, const std::string& file);
+// "Bond Filters" (in Discretization or an Initial Damage model; path: the list's path). initialDamage: Peridigm's
+// Initial Damage reading of an Exodus Mesh filter, a triangle of each element's first three nodes.
+std::vector<ParameterSpec> bondFilterSpecs(const std::string& type);  // type "": Type only
+BondFilters parseBondFilters(const PL& list, const std::string& file, const std::string& path, const std::string& dir,
+                             bool initialDamage);
 // Generated node-set names ("Left Layer", ...) of a discretization.
 std::vector<std::string> generatedNodeSetNames(const DiscretizationSpec& d);
 
@@ -31,7 +36,9 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
 // Damage Models (optional; before Blocks, which name them).
 std::vector<ParameterSpec> criticalStretchSpecs();
 std::vector<ParameterSpec> maximumPrincipalStressSpecs();
-std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file);
+std::vector<ParameterSpec> timeDependentCriticalStretchSpecs();
+std::vector<ParameterSpec> initialDamageSpecs();
+std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file, const std::string& dir);
 
 // Boundary Conditions: node sets first (a condition may name a set defined after it), then conditions.
 std::vector<ParameterSpec> regionSpecs();

@@ -6,6 +6,7 @@
 
 #include "core/Expression.hpp"
 #include "core/InputError.hpp"
+#include "discretization/BondCutter.hpp"
 #include "parallel/Collective.hpp"
 
 namespace pf {
@@ -57,6 +58,7 @@ Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> over
     specs.push_back({"Damage", Location::Node, false, true});
   }
   state_.allocate(specs, n, layout_->family().numBonds());
+  if (hasDamage_) applyInitialDamage();
   const std::size_t no = static_cast<std::size_t>(layout_->numOverlap());
   uOverlap_.assign(3 * no, 0.0);
   yOverlap_.assign(3 * no, 0.0);
@@ -83,11 +85,52 @@ FamilyView Model::view(const BlockModel& b) {
     // Frozen: no stretch exceeds infinity, so exactly the base set is broken.
     const bool frozen = rounds_ && !breaking_;
     if (b.criticalStretch > 0.0) v.criticalStretch = frozen ? HUGE_VAL : b.criticalStretch;
+    if (b.stretchOfTime) v.criticalStretch = frozen ? HUGE_VAL : criticalStretchNow(b);
     if (b.tensileStrength > 0.0) v.tensileStrength = frozen ? HUGE_VAL : b.tensileStrength;
   }
   if (yieldRounds_) v.admitted = admitted_.data();  // else null: every point may yield
   if (!fields_.empty()) v.fields = &fields_.values();
   return v;
+}
+
+// Peridigm's Initial Damage (Peridigm_InitialDamageModel.cpp, initialize): a bond from owned point i to j that
+// crosses one of the filters (x_i the segment's start, as there) is broken from the start, in the committed and
+// the trial copy, and i's Damage is its share of broken bonds.
+void Model::applyInitialDamage() {
+  const BondFamily& fam = layout_->family();
+  double* flags[2] = {state_.trial("Bond_Damage"), state_.restoreCommitted("Bond_Damage")};
+  double* count[2] = {state_.trial("Broken_Bonds"), state_.restoreCommitted("Broken_Bonds")};
+  double* damage = state_.trial("Damage");
+  for (const BlockModel& b : blocks_) {
+    if (!b.initialBreaks) continue;
+    double longest = 0.0;
+    for (int k = fam.offsets[b.begin]; k < fam.offsets[b.end]; ++k) longest = std::max(longest, fam.refLength[k]);
+    if (!(longest > 0.0)) continue;
+    const BondCutter cutter(*b.initialBreaks, x_, longest);
+    for (int i = b.begin; i < b.end; ++i) {
+      double broken = 0.0;
+      for (int k = fam.offsets[i]; k < fam.offsets[i + 1]; ++k)
+        if (cutter.cuts(&x_[3 * i], &x_[3 * fam.neighbors[k]])) {
+          flags[0][k] = flags[1][k] = 1.0;
+          broken += 1.0;
+        }
+      count[0][i] = count[1][i] = broken;
+      const int nb = fam.offsets[i + 1] - fam.offsets[i];
+      damage[i] = nb > 0 ? broken / nb : 0.0;
+    }
+  }
+}
+
+// Peridigm evaluates its Time Dependent Critical Stretch at the step's end time before each explicit step (and at
+// 0 before the first evaluation); time_ is the time the solver last imposed conditions for, that same time.
+double Model::criticalStretchNow(const BlockModel& b) const {
+  const double sc = (*b.stretchOfTime)(0.0, 0.0, 0.0, time_);
+  if (!std::isfinite(sc)) {
+    const std::string why = b.stretchOfTime->whyNotFinite(0.0, 0.0, 0.0, time_);
+    throw InputError(b.stretchOfTime->context() + ": not finite at t = " + std::to_string(time_) +
+                     (why.empty() ? std::string() : " (" + why + ")"));
+  }
+  return sc;
 }
 
 void Model::beginBreakRounds() {

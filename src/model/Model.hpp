@@ -34,7 +34,11 @@ struct BlockModel {
   bool surfaceBand = false;      // Surface Correction = NDO Band (model/SurfaceBand.hpp)
   double tensileStrength = 0.0;  // the block's Maximum Principal Stress damage model (f_t); 0: not that model
   std::vector<std::shared_ptr<const FieldOperator>> fieldOperators = {};  // its terms on fields (conduction, heating)
-  bool damaged() const { return criticalStretch > 0.0 || tensileStrength > 0.0; }
+  // Time Dependent Critical Stretch: s_c(t) at the evaluated time replaces criticalStretch; null: not that model.
+  std::shared_ptr<const Expression> stretchOfTime = nullptr;
+  // Initial Damage: the bonds of the block's nodes that cross these start broken (criticalStretch is infinite).
+  std::shared_ptr<const BondFilters> initialBreaks = nullptr;
+  bool damaged() const { return criticalStretch > 0.0 || tensileStrength > 0.0 || stretchOfTime != nullptr; }
 };
 
 
@@ -210,6 +214,8 @@ class Model {
   std::map<std::string, std::vector<double>> operatorValueArrays_;
   FieldValues operatorValues_;
   void prepareFieldOperators();
+  void applyInitialDamage();  // the Initial Damage blocks' cut bonds broken in both state copies
+  double criticalStretchNow(const BlockModel& b) const;  // s_c(time_) of a Time Dependent Critical Stretch block
   double fieldLoad_ = 0.0, fieldLoadTime_ = NAN;
   bool fieldLoadWanted_ = false;
   void updateFieldLoad();

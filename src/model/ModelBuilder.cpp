@@ -29,6 +29,8 @@ struct BlockSpec {
   double criticalStretch = 0.0;  // 0: no damage model
   bool ndoBand = false;
   double tensileStrength = 0.0;  // Maximum Principal Stress damage; 0: not that model
+  std::shared_ptr<const Expression> stretchOfTime;      // Time Dependent Critical Stretch
+  std::shared_ptr<const BondFilters> initialBreaks;     // Initial Damage
 };
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
@@ -52,7 +54,7 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model' = '" + g.damageModel + "' (" + d->model +
                        "): material '" + g.material + "' (" + deck.material(g.material).entry->model +
                        ") has no Cauchy stress per point; Maximum Principal Stress works with the correspondence models");
-    if (d && d->criticalStretch > 0.0 && !materialOf(g.material)->breaksBonds())
+    if (d && (d->criticalStretch > 0.0 || d->stretchOfTime) && !materialOf(g.material)->breaksBonds())
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model' = '" + g.damageModel + "': material '" +
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
@@ -75,6 +77,8 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
     BlockSpec spec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material), {},
                    d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
     if (operators.count(g.material)) spec.fieldOperators = operators[g.material];
+    if (d) spec.stretchOfTime = d->stretchOfTime;
+    if (d && !d->initialBreaks.empty()) spec.initialBreaks = std::make_shared<const BondFilters>(d->initialBreaks);
     return spec;
   };
   for (const BlockGroupSpec& g : deck.blocks)
@@ -319,10 +323,12 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   // A PdQuickGrid cloud is block 1 only: its horizon sets the box neighbourhood.
   const double h1 = blocks.count(1) ? blocks.at(1).horizon : blocks.begin()->second.horizon;
   const std::array<double, 3> box = quickGridBox(deck.discretization, h1);
-  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence,
-                                                    cloud.partialVolume ? &cloud.cell : nullptr,
-                                                    deck.discretization.boxNeighbourhood ? &box : nullptr,
-                                                    deck.discretization.omitBondsBetweenBlocks);
+  BondRules rules;
+  rules.cell = cloud.partialVolume ? &cloud.cell : nullptr;
+  rules.box = deck.discretization.boxNeighbourhood ? &box : nullptr;
+  rules.omitBondsBetweenBlocks = deck.discretization.omitBondsBetweenBlocks;
+  rules.filters = &deck.discretization.bondFilters;
+  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence, rules);
   std::vector<double> x = layout->releaseCoordinates(), volume = layout->releaseVolumes();
   requireDistinctPoints(*layout, x, volume, cloud.spacing, inputFile);
   const std::vector<int>& gids = layout->gids();
@@ -331,7 +337,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
     const BlockSpec& s = blocks.at(r.blockId);
     blockModels.push_back(
         BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
-                   s.ndoBand, s.tensileStrength, s.fieldOperators});
+                   s.ndoBand, s.tensileStrength, s.fieldOperators, s.stretchOfTime, s.initialBreaks});
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;

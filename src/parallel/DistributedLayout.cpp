@@ -9,6 +9,7 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "discretization/BondCutter.hpp"
 #include "discretization/NeighborSearch.hpp"
 #include "discretization/PartialVolume.hpp"
 #include "discretization/SpaceFillingCurve.hpp"
@@ -93,13 +94,23 @@ void keepBondsWithinBlocks(BondFamily& family, const PointCloud& ownedPoints, co
   keepBonds(family, [&](int i, int j) { return blockOf(i) == blockOf(j); });
 }
 
+// Peridigm's Bond Filters. A rank holds both ends of every bond of its owned points (owned points and ghost
+// candidates in pts), so the filters need nothing from other ranks.
+void removeFilteredBonds(BondFamily& family, const std::vector<double>& pts, const BondFilters& filters) {
+  if (filters.empty()) return;
+  double longest = 0.0;
+  for (double l : family.refLength) longest = std::max(longest, l);
+  if (longest > 0.0) removeCutBonds(family, pts, filters, longest);
+}
+
 }  // namespace
 
 DistributedLayout::DistributedLayout(const Communicator& comm, const PointCloud& ownedPoints,
                                      const std::vector<double>& horizon, const Influence& influence,
-                                     const std::array<double, 3>* cell, const std::array<double, 3>* box,
-                                     bool omitBondsBetweenBlocks)
+                                     const BondRules& rules)
     : comm_(comm) {
+  const std::array<double, 3>* cell = rules.cell;
+  const std::array<double, 3>* box = rules.box;
   numGlobal_ = static_cast<int>(ownedPoints.numGlobal);
   numOwned_ = ownedPoints.size();
   // Ghosts: a box neighbourhood reaches as far as the ball around the box.
@@ -132,7 +143,8 @@ DistributedLayout::DistributedLayout(const Communicator& comm, const PointCloud&
   std::vector<double> h(numOwned_);
   for (int i = 0; i < numOwned_; ++i) h[i] = horizon[owned[i]];
   buildFamilies(pts, numOwned_, h, family_, cell, box);
-  if (omitBondsBetweenBlocks) keepBondsWithinBlocks(family_, ownedPoints, owned, ghosts, candidates);
+  if (rules.omitBondsBetweenBlocks) keepBondsWithinBlocks(family_, ownedPoints, owned, ghosts, candidates);
+  if (rules.filters) removeFilteredBonds(family_, pts, *rules.filters);
   // Rows in a global order (Hilbert key, then cloud index) instead of local index order, where a point's
   // on-rank neighbours precede its ghosts: family sums then run in the same order at every rank count.
   const int nOwned = numOwned_;

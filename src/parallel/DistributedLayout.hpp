@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/BondFamily.hpp"
+#include "core/BondFilter.hpp"
 #include "core/InfluenceFunction.hpp"
 #include "discretization/Discretization.hpp"
 #include "parallel/ChunkedGather.hpp"
@@ -21,18 +22,26 @@ struct BlockRange {
   int begin, end;   // owned-local node range
 };
 
+// How the bonds are made beside the horizon ball. cell: the grid's cell for partial-volume families (see
+// buildFamilies), or null for whole neighbour volumes. box: Peridigm's PdQuickGrid box neighbourhood
+// (buildFamilies), or null for the spherical one. omitBondsBetweenBlocks: Peridigm's "Omit Bonds Between
+// Blocks" = "All", no bond joins points of two blocks. filters: Peridigm's "Bond Filters", no bond crosses one
+// (discretization/BondCutter.hpp), or null.
+struct BondRules {
+  const std::array<double, 3>* cell = nullptr;
+  const std::array<double, 3>* box = nullptr;
+  bool omitBondsBetweenBlocks = false;
+  const BondFilters* filters = nullptr;
+};
+
 class DistributedLayout {
  public:
   // Collective. owned: this rank's points (ascending gid, as exchangePoints returns them; numGlobal set),
   // horizon: one per owned point. Ghosts come from the ranks whose points lie within a reach of this rank's
   // bounding box (an exchange of boxes, then of those points): no rank sees the whole cloud. The influence
-  // function sets each bond's omega from its length and its owner's horizon. cell: the grid's cell for
-  // partial-volume families (see buildFamilies), or null for whole neighbour volumes. box: Peridigm's
-  // PdQuickGrid box neighbourhood (buildFamilies), or null for the spherical one. omitBondsBetweenBlocks:
-  // Peridigm's "Omit Bonds Between Blocks" = "All", no bond joins points of two blocks.
+  // function sets each bond's omega from its length and its owner's horizon; rules: see BondRules.
   DistributedLayout(const Communicator& comm, const PointCloud& owned, const std::vector<double>& horizon,
-                    const Influence& influence, const std::array<double, 3>* cell = nullptr,
-                    const std::array<double, 3>* box = nullptr, bool omitBondsBetweenBlocks = false);
+                    const Influence& influence, const BondRules& rules = {});
   ~DistributedLayout();
   DistributedLayout(const DistributedLayout&) = delete;
   DistributedLayout& operator=(const DistributedLayout&) = delete;

@@ -22,8 +22,9 @@ SolverEntry VerletSolver::entry() {
   e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
   e.dynamic = true;
   e.mayAlsoSolve = {"Temperature"};
-  e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate; above that estimate "
-                                      "a warning, above 2 × it an input error").positive(),
+  e.parameters = {S::real("Fixed dt", "time step; the run takes floor((Final Time − Initial Time) / dt) steps, as "
+                                      "Peridigm; default: `Safety Factor` × the stable step estimate, shortened to end on "
+                                      "Final Time; above that estimate a warning, above 2 × it an input error").positive(),
                   S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ); above 1 a warning, above 2 "
                                            "an input error (as `Fixed dt`)").byDefault("0.8").positive(),
                   S::flag("Allow Unstable Time Step",
@@ -171,8 +172,12 @@ long VerletSolver::stepCount(double duration, double& dt, const SolverResume* re
     dt = resume->scalar("dt");
     return static_cast<long>(resume->scalar("steps"));
   }
+  // A Fixed dt takes floor(duration / dt) steps, as Peridigm (Peridigm.cpp, executeExplicit): a quotient that rounds
+  // below an integer (0.01 / 2e-5 = 499.99999999999994) takes one step less, ending before the end time. The default
+  // step is shortened to land on it (ceil, a quotient within 1e-9 above an integer taken as it).
+  if (opt_.fixedDt > 0) return std::max(1L, static_cast<long>(std::floor(duration / dt)));
   const long steps = std::max(1L, static_cast<long>(std::ceil(duration / dt - 1e-9)));
-  if (opt_.fixedDt <= 0) dt = duration / steps;  // land exactly on the end time
+  dt = duration / steps;
   return steps;
 }
 

@@ -75,6 +75,18 @@ foreach(np 1 2)
     ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_user_all_np${np}/compat_user_all.e)
 endforeach()
 
+# Bond Filters on a generated lattice and a Text File mesh (Peridigm's suite has them on Exodus meshes only):
+# Number_Of_Neighbors against a count in exact arithmetic with Peridigm's edge rules (a rectangle's edge
+# through bond midpoints cuts them, a disk's rim does not).
+foreach(kind grid text)
+  foreach(np 1 2)
+    periforge_run(peridigm_compat_bond_filter_${kind}_np${np} ${REG}/compat/bond_filter_${kind}.xml ${np})
+    periforge_check(peridigm_compat_bond_filter_${kind}_np${np}_check peridigm_compat_bond_filter_${kind}_np${np}
+      ${PY} ${REG}/compat/check_bond_filter.py
+      ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_bond_filter_${kind}_np${np}/bond_filter_${kind}.e)
+  endforeach()
+endforeach()
+
 # Cases of Peridigm's whole regression and verification suite (../shared/reference/peridigm-suite; issue 39)
 # that match Peridigm's gold within its .comp tolerances, run unmodified at np 1 and 2. scripts/peridigm_suite
 # runs every case and prints the table; a case joins this list when it passes there at both np.
@@ -101,7 +113,12 @@ set(peridigm_suite_cases
   "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp"
   "Contact_2x1x1 Contact_2x1x1.xml Contact_2x1x1 Contact_2x1x1.comp"
   "Contact_Friction Contact_Friction.xml Contact_Friction Contact_Friction.comp"
-  "Contact_Friction_Time_Dependent_Coefficient Contact_Friction.xml Contact_Friction Contact_Friction.comp")
+  "Contact_Friction_Time_Dependent_Coefficient Contact_Friction.xml Contact_Friction Contact_Friction.comp"
+  "PrecrackedPlate PrecrackedPlate.xml PrecrackedPlate PrecrackedPlate.comp"
+  "ShellBondFilter__QuadBondFilter QuadBondFilter.yaml QuadBondFilter QuadBondFilter.comp"
+  "ShellBondFilter__TriBondFilter TriBondFilter.yaml TriBondFilter TriBondFilter.comp"
+  "InitialDamage InitialDamage.xml InitialDamage InitialDamage.comp"
+  "BondBreakingInitialVelocity_TimeDependentCS BondBreakingInitialVelocity.xml BondBreakingInitialVelocity BondBreakingInitialVelocity.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)

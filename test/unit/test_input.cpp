@@ -117,8 +117,8 @@ TEST(InputSchema, UnknownSubListNamesItsPath) {
   p->sublist("Solver").sublist("QuasiStatic").sublist("Extra");
   EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "Solver/QuasiStatic: unknown sub-list 'Extra'");
   auto q = base();
-  q->sublist("Contact");
-  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "unknown sub-list 'Contact'");
+  q->sublist("Contacts");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "unknown sub-list 'Contacts'");
 }
 
 // Damage Models: parsed once into DamageModelSpecs, named by the blocks; bad input names file and parameter.
