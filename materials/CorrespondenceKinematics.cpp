@@ -11,77 +11,13 @@
 namespace pf {
 namespace {
 
-// The weight of bond b in every family sum: omega V_j (times the partial-volume fraction); 0 for a bond broken
-// in the committed (or break-round base) set.
-inline double bondWeight(const FamilyView& fam, int b) {
-  if (fam.brokenN && fam.brokenN[b] != 0.0) return 0.0;  // a broken bond: omega' = 0 (Li & Geng Eq. 49)
-  const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
-  const double v = fam.volume[fam.neighbors[b]];
-  return fam.fraction ? w * v * fam.fraction[b] : w * v;
-}
-
 std::string pointName(const FamilyView& fam, int i) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "the point at (%.6g, %.6g, %.6g)", fam.x[3 * i], fam.x[3 * i + 1], fam.x[3 * i + 2]);
   return buf;
 }
 
-// K is singular for a family without three non-coplanar bonds; in floating point it is then merely
-// ill-conditioned. det(K) / (tr K / d)^d is 1 for an isotropic family and 0 for a degenerate one.
-const double kMinShapeQuality = 1e-8;
-
-// K and N = sum w Y (x) xi of owned node i, with the number of bonds and det K / (tr K / d)^d.
-struct FamilySums {
-  Mat3 K{}, N{};
-  int bonds = 0;
-  double quality = 0.0;
-};
-
-FamilySums familySums(const FamilyView& fam, int i, const double* y, bool planar) {
-  FamilySums s;
-  Mat3& K = s.K;
-  Mat3& N = s.N;
-  const double* xi0 = fam.x + 3 * i;
-  const double* yi = y + 3 * i;
-  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-    const int j = fam.neighbors[b];
-    const double w = bondWeight(fam, b);
-    if (w == 0.0) continue;
-    ++s.bonds;
-    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
-    const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 3; ++c) {
-        K[3 * a + c] += w * xi[a] * xi[c];
-        N[3 * a + c] += w * Y[a] * xi[c];
-      }
-  }
-  if (planar) {
-    const double d2 = K[0] * K[4] - K[1] * K[3], t2 = 0.5 * (K[0] + K[4]);
-    s.quality = t2 > 0 ? d2 / (t2 * t2) : 0.0;
-  } else {
-    const double t3 = trace(K) / 3.0;
-    s.quality = t3 > 0 ? det(K) / (t3 * t3 * t3) : 0.0;
-  }
-  return s;
-}
-
 }  // namespace
-
-bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out) {
-  const FamilySums s = familySums(fam, i, y, planar);
-  if (!(s.quality > kMinShapeQuality)) return false;
-  const Mat3& K = s.K;
-  if (planar) {  // the 2x2 in-plane block; z stays the identity
-    const double d2 = K[0] * K[4] - K[1] * K[3];
-    out.Kinv = {K[4] / d2, -K[1] / d2, 0, -K[3] / d2, K[0] / d2, 0, 0, 0, 0};
-  } else {
-    inverse(K, out.Kinv);
-  }
-  out.F = mul(s.N, out.Kinv);
-  if (planar) out.F[2] = out.F[5] = out.F[6] = out.F[7] = 0.0, out.F[8] = 1.0;
-  return true;
-}
 
 ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar) {
   ShapeAndGradient out;

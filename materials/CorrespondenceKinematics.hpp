@@ -4,21 +4,16 @@
 // update with the unrotated strain increment (Eqs. 14-18), first Piola stress (Eqs. 23-24), the force state
 // T<xi> = omega P K^-1 xi (Eq. 25) and Peridigm's hourglass force. Plain arrays in, no state.
 #include "core/BondFamily.hpp"
-#include "Tensor3.hpp"
+#include "core/ShapeTensor.hpp"
+#include "core/Tensor3.hpp"
 
 namespace pf {
-
-struct ShapeAndGradient {
-  Mat3 Kinv;  // K^-1 (planar: the in-plane 2x2 inverse, zz = 0)
-  Mat3 F;     // deformation gradient (planar: F_zz = 1, no out-of-plane shear)
-};
 
 // K = sum omega xi (x) xi V_j and F = (sum omega Y (x) xi V_j) K^-1 of owned node i (V_j times the bond's
 // partial-volume fraction; a bond flagged in fam.brokenN takes omega' = 0, Li & Geng Eq. 49). planar: the family lies in z = 0. Throws InputError naming the point when K is
 // singular or ill-conditioned (fewer than three non-coplanar bonds, two non-parallel ones in 2D).
 ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar);
-// The same without the throw: false when K is singular (out is then unset).
-bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out);
+// The same without the throw: core/ShapeTensor.hpp's tryShapeAndGradient.
 
 // One step of the Flanagan & Taylor (1987) polar update from F_n to F: the increment L dt = (F - F_n) F_mid^-1
 // (F_mid = (F_n + F)/2), D dt = sym, W dt = skew; the spin of the rotation Omega = W + (tr V I - V)^-1 z

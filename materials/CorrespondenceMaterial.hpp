@@ -9,7 +9,7 @@
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
 #include "ElasticModuli.hpp"
-#include "Tensor3.hpp"
+#include "core/Tensor3.hpp"
 
 namespace pf {
 
