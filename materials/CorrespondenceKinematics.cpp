@@ -165,15 +165,15 @@ inline void hourglassBothEnds(const double* Y, const double* xi, const double* F
   magj = cj * dj / (refLength * len2);
 }
 
-}  // namespace
-
-void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
-                  double* force, const double* broken) {
+// addBandForce, with the hourglass part kept apart only when wanted (a compile-time choice: no cost otherwise).
+template <bool kHourglass>
+void bandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
+               double* force, const double* broken, double* hourglass) {
   const double* xi0 = fam.x + 3 * i;
   const double* yi = y + 3 * i;
   const double* ri = rows + static_cast<std::size_t>(stride) * i;
   const double* Pi = ri + kRowP;
-  double f[3] = {0.0, 0.0, 0.0};
+  double f[3] = {0.0, 0.0, 0.0}, hg[3] = {0.0, 0.0, 0.0};
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
     if (broken && broken[b] != 0.0) continue;
     const int j = fam.neighbors[b];
@@ -191,6 +191,7 @@ void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kin
       double t = 0.0;
       for (int c = 0; c < 3; ++c) t += (Pj[3 * a + c] - Pi[3 * a + c]) * kx[c];
       f[a] += (w * t + (magi + magj) * Y[a]) * vj;
+      if constexpr (kHourglass) hg[a] += (magi + magj) * Y[a] * vj;
     }
   }
   // Eq. 31's traction term -P_i n / dx; T_ext / dx comes from a Pressure condition: a dead load as its body
@@ -208,16 +209,18 @@ void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kin
     }
   }
   for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
+  if constexpr (kHourglass) std::copy(hg, hg + 3, hourglass);
 }
 
-void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
-                      const double* broken) {
+template <bool kHourglass>
+void gatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
+                   const double* broken, double* hourglass) {
   const double* xi0 = fam.x + 3 * i;
   const double* yi = y + 3 * i;
   const double* Ai = rows + static_cast<std::size_t>(stride) * i;
   const double* Fi = Ai + kRowF;
   const double ci = Ai[kRowC];
-  double f[3] = {0.0, 0.0, 0.0};
+  double f[3] = {0.0, 0.0, 0.0}, hg[3] = {0.0, 0.0, 0.0};
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
     if (broken && broken[b] != 0.0) continue;
     const int j = fam.neighbors[b];
@@ -241,10 +244,30 @@ void addGatheredForce(const FamilyView& fam, int i, const double* y, const doubl
     hourglassBothEnds(Y, xi, Fi, Fj, ci, cj, fam.refLength[b], magi, magj);
     for (int a = 0; a < 3; ++a) {
       f[a] += (ti[a] + tj[a] + (magi + magj) * Y[a]) * vj;
+      if constexpr (kHourglass) hg[a] += (magi + magj) * Y[a] * vj;
       if (!gathers) force[3 * j + a] -= (ti[a] + magi * Y[a]) * fam.volume[i] * frac;
     }
   }
   for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
+  if constexpr (kHourglass) std::copy(hg, hg + 3, hourglass);
+}
+
+}  // namespace
+
+void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
+                  double* force, const double* broken, double* hourglass) {
+  if (hourglass)
+    bandForce<true>(fam, i, y, Kinv, rows, stride, force, broken, hourglass);
+  else
+    bandForce<false>(fam, i, y, Kinv, rows, stride, force, broken, nullptr);
+}
+
+void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
+                      const double* broken, double* hourglass) {
+  if (hourglass)
+    gatheredForce<true>(fam, i, y, rows, stride, force, broken, hourglass);
+  else
+    gatheredForce<false>(fam, i, y, rows, stride, force, broken, nullptr);
 }
 
 namespace {

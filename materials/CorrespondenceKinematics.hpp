@@ -49,14 +49,15 @@ constexpr int kRowA = 0, kRowF = 9, kRowC = 18, kRowFlag = 19, kRowS1 = 20, kGat
 // constant without damage: completeForce reads it instead of rebuilding it from the family on every evaluation).
 constexpr int kRowP = 21, kRowKinv = 30, kBandRow = 39;
 // broken: per bond, the trial flags (1: the bond is absent from both ends' sums, stress and hourglass), or null.
+// hourglass: where to write the hourglass part of f_i (3 values; Peridigm's Hourglass_Force_Density), or null.
 void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
-                      const double* broken = nullptr);
+                      const double* broken = nullptr, double* hourglass = nullptr);
 
 // Li & Geng (seed 003) Eqs. 31-32 for owned node i of the surface band (fam.band): the NDO divergence
 // f_i += sum omega (P_j - P_i) K_i^-1 xi V_j, the hourglass term of addGatheredForce, and the traction term
 // -P_i n_i / dx of the outer layer (fam.outerNormal, fam.layerThickness). rows: kBandRow values per node.
 void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
-                  double* force, const double* broken = nullptr);
+                  double* force, const double* broken = nullptr, double* hourglass = nullptr);
 
 // Peridigm's hourglass (zero-energy mode) force of owned node i: per bond, with the deformed bond Y and
 // its affine image F xi, T = c ((Y - F xi) . Y/|Y|) / |xi| Y/|Y|, added as f_i += T V_j, f_j -= T V_i.

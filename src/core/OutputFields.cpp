@@ -46,6 +46,13 @@ const std::vector<std::string>& tensorFields() {
 
 bool isTensorField(const std::string& name) { return listed(tensorFields(), name); }
 
+const std::vector<std::string>& materialVectorFields() {
+  static const std::vector<std::string> v = {"Hourglass_Force_Density"};
+  return v;
+}
+
+bool isMaterialVectorField(const std::string& name) { return listed(materialVectorFields(), name); }
+
 bool isKinematicTensor(const std::string& name) {
   return name == "Deformation_Gradient" || name == "Shape_Tensor_Inverse";
 }

@@ -22,6 +22,10 @@ bool isGlobalField(const std::string& name);
 // (kinematicTensor); the others are node fields of the materials that compute them, one per component (a
 // symmetric tensor stores only XX, YY, ZZ, XY, YZ, XZ: storedComponentName maps YX to XY and so on).
 const std::vector<std::string>& tensorFields();
+// Vectors of a material's (Hourglass_Force_Density of the correspondence models): nodal variables <name>X/Y/Z like
+// the core's vectors, stored as the node fields <name>X, <name>Y, <name>Z.
+const std::vector<std::string>& materialVectorFields();
+bool isMaterialVectorField(const std::string& name);
 bool isTensorField(const std::string& name);
 bool isKinematicTensor(const std::string& name);
 const std::vector<std::string>& tensorComponentSuffixes();  // "XX", "XY", ..., "ZZ"

@@ -52,6 +52,11 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
       addTensor(var, out.listName + "/Output Variables");
       continue;
     }
+    if (isMaterialVectorField(var)) {
+      for (const char* c : {"X", "Y", "Z"}) requireComputed(var + c, out.listName + "/Output Variables");
+      nodalVectors_.push_back(var);
+      continue;
+    }
     requireComputed(var, out.listName + "/Output Variables");
     const std::vector<std::string> fieldOutputs = model_.fields().outputs();
     if (std::find(fieldOutputs.begin(), fieldOutputs.end(), var) != fieldOutputs.end()) nodalScalars_.push_back(var);
@@ -207,6 +212,10 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
       if (i >= b.begin && i < b.end) return b.horizon;
   // A variable some block's material computes (requireComputed) and this rank's blocks do not: 0, as at np 1
   // for the points of the other materials.
+  if (isMaterialVectorField(var)) {
+    const std::string c = var + "XYZ"[comp];
+    return model_.state().has(c) ? model_.state().committed(c)[i] : 0.0;
+  }
   return model_.state().has(var) ? model_.state().committed(var)[i] : 0.0;
 }
 

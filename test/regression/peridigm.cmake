@@ -128,3 +128,15 @@ foreach(motion PureShear SimpleShear SolidRotation)
       ${PERIDIGM_SUITE}/${case}/${out}_gold.e ${REG}/compat/deformation_gradient_only.comp)
   endforeach()
 endforeach()
+
+# Peridigm's tensor and vector outputs of Elastic Correspondence (Cauchy_Stress, Rotation_Tensor,
+# Shape_Tensor_Inverse, Hourglass_Force_Density, ...) on its thermal-expansion cube, run unmodified: the variables
+# Periforge's kinematics share with Peridigm's, within Peridigm's tolerances (compat/correspondence_tensors_thermal.comp
+# names the others and why they differ).
+foreach(np 1 2)
+  set(case ThermalExpansionCubeElasticCorrespondence)
+  periforge_run(peridigm_suite_${case}_np${np} ${PERIDIGM_SUITE}/${case}/${case}.xml ${np})
+  periforge_check(peridigm_suite_${case}_np${np}_tensors_vs_gold peridigm_suite_${case}_np${np}
+    ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_suite_${case}_np${np}/${case}.e
+    ${PERIDIGM_SUITE}/${case}/${case}_gold.e ${REG}/compat/correspondence_tensors_thermal.comp)
+endforeach()
