@@ -38,10 +38,13 @@ struct TensorField {
   }
 };
 
-inline void addTensorSpecs(std::vector<StateSpec>& s, const std::string& base, bool symmetric, bool output, bool identity) {
+// history: a committed/trial pair (a field the update reads back, or one that must survive an evaluation without a
+// step); otherwise one array, rewritten by every evaluation that wants it.
+inline void addTensorSpecs(std::vector<StateSpec>& s, const std::string& base, bool symmetric, bool output, bool identity,
+                           bool history = true) {
   for (int c = 0; c < (symmetric ? 6 : 9); ++c) {
     const bool diagonal = symmetric ? c < 3 : c % 4 == 0;
-    s.push_back({base + (symmetric ? kSym[c] : kFull[c]), Location::Node, true, output, identity && diagonal ? 1.0 : 0.0});
+    s.push_back({base + (symmetric ? kSym[c] : kFull[c]), Location::Node, history, output, identity && diagonal ? 1.0 : 0.0});
   }
 }
 

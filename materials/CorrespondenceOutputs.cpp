@@ -11,7 +11,7 @@ namespace pf {
 
 std::vector<StateSpec> CorrespondenceMaterial::outputStateSpecs() const {
   std::vector<StateSpec> s;
-  addTensorSpecs(s, "Cauchy_Stress", true, true, false);
+  addTensorSpecs(s, "Cauchy_Stress", true, true, false, false);  // rewritten by every evaluation that wants it
   // History, so that an evaluation without time passing (the output pass after a quasi-static step's commit)
   // reports the rate of the step that led to the state instead of 0/0.
   addTensorSpecs(s, "Unrotated_Rate_Of_Deformation", true, true, false);
