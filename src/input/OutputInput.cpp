@@ -69,7 +69,7 @@ std::vector<ProbeSpec> probes(const PL& probes, bool dynamic, const std::string&
     for (const std::string& var : s.variables) {
       checkVariable(var, dynamic, file, ppath, "Variables");
       if (isTensorField(var) || isMaterialVectorField(var))  // a history column is one number
-        fail(file, ppath, "'Variables' names '" + var + "', a material's tensor or vector: a probe takes one component ('" +
+        fail(file, ppath, "'Variables' names '" + var + "', a tensor or vector: a probe takes one component ('" +
                               var + (isTensorField(var) ? "XX" : "X") + "', ...)");
     }
     out.push_back(s);

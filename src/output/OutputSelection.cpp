@@ -82,7 +82,17 @@ void OutputManager::requireComputed(const std::string& var, const std::string& w
 // must be a material's node fields, stored whole or as a symmetric tensor's 6 components.
 void OutputManager::addTensor(const std::string& tensor, const std::string& where) {
   const bool kinematic = isKinematicTensor(tensor);
-  if (kinematic && F_.empty()) F_.assign(9 * static_cast<std::size_t>(model_.numOwned()), 0.0), Kinv_ = F_;
+  if (kinematic && F_.empty()) {
+    // K does not change with u: a family too thin for it (a line of points) is the deck's error, told here once
+    // rather than at the first step written.
+    F_.assign(9 * static_cast<std::size_t>(model_.numOwned()), 0.0), Kinv_ = F_;
+    const std::vector<double> u0(static_cast<std::size_t>(model_.numDofs()), 0.0);
+    try {
+      model_.kinematicTensors(u0.data(), F_.data(), Kinv_.data());
+    } catch (const InputError& e) {
+      throw InputError(inputFile_ + ": " + where + ": '" + tensor + "': " + e.what());
+    }
+  }
   const std::vector<std::string>& suffixes = tensorComponentSuffixes();
   for (std::size_t c = 0; c < suffixes.size(); ++c) {
     const std::string var = tensor + suffixes[c];
@@ -90,7 +100,11 @@ void OutputManager::addTensor(const std::string& tensor, const std::string& wher
     if (kinematic)
       kinematic_[var] = {tensor == "Deformation_Gradient" ? &F_ : &Kinv_, static_cast<int>(c)};
     else
-      requireComputed(storedComponent(var), where);
+      try {
+        requireComputed(storedComponent(var), where);
+      } catch (const InputError&) {  // every rank throws it: the question is collective
+        throw InputError(inputFile_ + ": " + where + ": '" + tensor + "' is not computed by any material of this run");
+      }
     elementScalars_.push_back(var);
   }
 }
