@@ -11,77 +11,13 @@
 namespace pf {
 namespace {
 
-// The weight of bond b in every family sum: omega V_j (times the partial-volume fraction); 0 for a bond broken
-// in the committed (or break-round base) set.
-inline double bondWeight(const FamilyView& fam, int b) {
-  if (fam.brokenN && fam.brokenN[b] != 0.0) return 0.0;  // a broken bond: omega' = 0 (Li & Geng Eq. 49)
-  const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
-  const double v = fam.volume[fam.neighbors[b]];
-  return fam.fraction ? w * v * fam.fraction[b] : w * v;
-}
-
 std::string pointName(const FamilyView& fam, int i) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "the point at (%.6g, %.6g, %.6g)", fam.x[3 * i], fam.x[3 * i + 1], fam.x[3 * i + 2]);
   return buf;
 }
 
-// K is singular for a family without three non-coplanar bonds; in floating point it is then merely
-// ill-conditioned. det(K) / (tr K / d)^d is 1 for an isotropic family and 0 for a degenerate one.
-const double kMinShapeQuality = 1e-8;
-
-// K and N = sum w Y (x) xi of owned node i, with the number of bonds and det K / (tr K / d)^d.
-struct FamilySums {
-  Mat3 K{}, N{};
-  int bonds = 0;
-  double quality = 0.0;
-};
-
-FamilySums familySums(const FamilyView& fam, int i, const double* y, bool planar) {
-  FamilySums s;
-  Mat3& K = s.K;
-  Mat3& N = s.N;
-  const double* xi0 = fam.x + 3 * i;
-  const double* yi = y + 3 * i;
-  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-    const int j = fam.neighbors[b];
-    const double w = bondWeight(fam, b);
-    if (w == 0.0) continue;
-    ++s.bonds;
-    const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
-    const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
-    for (int a = 0; a < 3; ++a)
-      for (int c = 0; c < 3; ++c) {
-        K[3 * a + c] += w * xi[a] * xi[c];
-        N[3 * a + c] += w * Y[a] * xi[c];
-      }
-  }
-  if (planar) {
-    const double d2 = K[0] * K[4] - K[1] * K[3], t2 = 0.5 * (K[0] + K[4]);
-    s.quality = t2 > 0 ? d2 / (t2 * t2) : 0.0;
-  } else {
-    const double t3 = trace(K) / 3.0;
-    s.quality = t3 > 0 ? det(K) / (t3 * t3 * t3) : 0.0;
-  }
-  return s;
-}
-
 }  // namespace
-
-bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out) {
-  const FamilySums s = familySums(fam, i, y, planar);
-  if (!(s.quality > kMinShapeQuality)) return false;
-  const Mat3& K = s.K;
-  if (planar) {  // the 2x2 in-plane block; z stays the identity
-    const double d2 = K[0] * K[4] - K[1] * K[3];
-    out.Kinv = {K[4] / d2, -K[1] / d2, 0, -K[3] / d2, K[0] / d2, 0, 0, 0, 0};
-  } else {
-    inverse(K, out.Kinv);
-  }
-  out.F = mul(s.N, out.Kinv);
-  if (planar) out.F[2] = out.F[5] = out.F[6] = out.F[7] = 0.0, out.F[8] = 1.0;
-  return true;
-}
 
 ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar) {
   ShapeAndGradient out;
@@ -229,15 +165,15 @@ inline void hourglassBothEnds(const double* Y, const double* xi, const double* F
   magj = cj * dj / (refLength * len2);
 }
 
-}  // namespace
-
-void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
-                  double* force, const double* broken) {
+// addBandForce, with the hourglass part kept apart only when wanted (a compile-time choice: no cost otherwise).
+template <bool kHourglass>
+void bandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
+               double* force, const double* broken, double* hourglass) {
   const double* xi0 = fam.x + 3 * i;
   const double* yi = y + 3 * i;
   const double* ri = rows + static_cast<std::size_t>(stride) * i;
   const double* Pi = ri + kRowP;
-  double f[3] = {0.0, 0.0, 0.0};
+  double f[3] = {0.0, 0.0, 0.0}, hg[3] = {0.0, 0.0, 0.0};
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
     if (broken && broken[b] != 0.0) continue;
     const int j = fam.neighbors[b];
@@ -255,6 +191,7 @@ void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kin
       double t = 0.0;
       for (int c = 0; c < 3; ++c) t += (Pj[3 * a + c] - Pi[3 * a + c]) * kx[c];
       f[a] += (w * t + (magi + magj) * Y[a]) * vj;
+      if constexpr (kHourglass) hg[a] += (magi + magj) * Y[a] * vj;
     }
   }
   // Eq. 31's traction term -P_i n / dx; T_ext / dx comes from a Pressure condition: a dead load as its body
@@ -272,16 +209,18 @@ void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kin
     }
   }
   for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
+  if constexpr (kHourglass) std::copy(hg, hg + 3, hourglass);
 }
 
-void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
-                      const double* broken) {
+template <bool kHourglass>
+void gatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
+                   const double* broken, double* hourglass) {
   const double* xi0 = fam.x + 3 * i;
   const double* yi = y + 3 * i;
   const double* Ai = rows + static_cast<std::size_t>(stride) * i;
   const double* Fi = Ai + kRowF;
   const double ci = Ai[kRowC];
-  double f[3] = {0.0, 0.0, 0.0};
+  double f[3] = {0.0, 0.0, 0.0}, hg[3] = {0.0, 0.0, 0.0};
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
     if (broken && broken[b] != 0.0) continue;
     const int j = fam.neighbors[b];
@@ -305,10 +244,30 @@ void addGatheredForce(const FamilyView& fam, int i, const double* y, const doubl
     hourglassBothEnds(Y, xi, Fi, Fj, ci, cj, fam.refLength[b], magi, magj);
     for (int a = 0; a < 3; ++a) {
       f[a] += (ti[a] + tj[a] + (magi + magj) * Y[a]) * vj;
+      if constexpr (kHourglass) hg[a] += (magi + magj) * Y[a] * vj;
       if (!gathers) force[3 * j + a] -= (ti[a] + magi * Y[a]) * fam.volume[i] * frac;
     }
   }
   for (int a = 0; a < 3; ++a) force[3 * i + a] += f[a];
+  if constexpr (kHourglass) std::copy(hg, hg + 3, hourglass);
+}
+
+}  // namespace
+
+void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
+                  double* force, const double* broken, double* hourglass) {
+  if (hourglass)
+    bandForce<true>(fam, i, y, Kinv, rows, stride, force, broken, hourglass);
+  else
+    bandForce<false>(fam, i, y, Kinv, rows, stride, force, broken, nullptr);
+}
+
+void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
+                      const double* broken, double* hourglass) {
+  if (hourglass)
+    gatheredForce<true>(fam, i, y, rows, stride, force, broken, hourglass);
+  else
+    gatheredForce<false>(fam, i, y, rows, stride, force, broken, nullptr);
 }
 
 namespace {

@@ -4,21 +4,16 @@
 // update with the unrotated strain increment (Eqs. 14-18), first Piola stress (Eqs. 23-24), the force state
 // T<xi> = omega P K^-1 xi (Eq. 25) and Peridigm's hourglass force. Plain arrays in, no state.
 #include "core/BondFamily.hpp"
-#include "Tensor3.hpp"
+#include "core/ShapeTensor.hpp"
+#include "core/Tensor3.hpp"
 
 namespace pf {
-
-struct ShapeAndGradient {
-  Mat3 Kinv;  // K^-1 (planar: the in-plane 2x2 inverse, zz = 0)
-  Mat3 F;     // deformation gradient (planar: F_zz = 1, no out-of-plane shear)
-};
 
 // K = sum omega xi (x) xi V_j and F = (sum omega Y (x) xi V_j) K^-1 of owned node i (V_j times the bond's
 // partial-volume fraction; a bond flagged in fam.brokenN takes omega' = 0, Li & Geng Eq. 49). planar: the family lies in z = 0. Throws InputError naming the point when K is
 // singular or ill-conditioned (fewer than three non-coplanar bonds, two non-parallel ones in 2D).
 ShapeAndGradient shapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar);
-// The same without the throw: false when K is singular (out is then unset).
-bool tryShapeAndGradient(const FamilyView& fam, int i, const double* y, bool planar, ShapeAndGradient& out);
+// The same without the throw: core/ShapeTensor.hpp's tryShapeAndGradient.
 
 // One step of the Flanagan & Taylor (1987) polar update from F_n to F: the increment L dt = (F - F_n) F_mid^-1
 // (F_mid = (F_n + F)/2), D dt = sym, W dt = skew; the spin of the rotation Omega = W + (tr V I - V)^-1 z
@@ -54,14 +49,15 @@ constexpr int kRowA = 0, kRowF = 9, kRowC = 18, kRowFlag = 19, kRowS1 = 20, kGat
 // constant without damage: completeForce reads it instead of rebuilding it from the family on every evaluation).
 constexpr int kRowP = 21, kRowKinv = 30, kBandRow = 39;
 // broken: per bond, the trial flags (1: the bond is absent from both ends' sums, stress and hourglass), or null.
+// hourglass: where to write the hourglass part of f_i (3 values; Peridigm's Hourglass_Force_Density), or null.
 void addGatheredForce(const FamilyView& fam, int i, const double* y, const double* rows, int stride, double* force,
-                      const double* broken = nullptr);
+                      const double* broken = nullptr, double* hourglass = nullptr);
 
 // Li & Geng (seed 003) Eqs. 31-32 for owned node i of the surface band (fam.band): the NDO divergence
 // f_i += sum omega (P_j - P_i) K_i^-1 xi V_j, the hourglass term of addGatheredForce, and the traction term
 // -P_i n_i / dx of the outer layer (fam.outerNormal, fam.layerThickness). rows: kBandRow values per node.
 void addBandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
-                  double* force, const double* broken = nullptr);
+                  double* force, const double* broken = nullptr, double* hourglass = nullptr);
 
 // Peridigm's hourglass (zero-energy mode) force of owned node i: per bond, with the deformed bond Y and
 // its affine image F xi, T = c ((Y - F xi) . Y/|Y|) / |xi| Y/|Y|, added as f_i += T V_j, f_j -= T V_i.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "CorrespondenceFields.hpp"
 #include "CorrespondenceKinematics.hpp"
 #include "SolidParameters.hpp"
 #include "core/InputError.hpp"
@@ -11,40 +12,7 @@
 namespace pf {
 namespace {
 
-const char* kFull[9] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};  // row-major
-const char* kSym[6] = {"XX", "YY", "ZZ", "XY", "YZ", "XZ"};                      // toSym6 order
 const double kPi = 3.14159265358979323846;
-
-// A tensor stored as one node field per component (the output layer writes node scalars).
-struct TensorField {
-  double* trial[9];
-  const double* committed[9];
-  int n = 0;
-  TensorField(StateStore& s, const std::string& base, bool symmetric) : n(symmetric ? 6 : 9) {
-    for (int c = 0; c < n; ++c) {
-      const std::string name = base + (symmetric ? kSym[c] : kFull[c]);
-      trial[c] = s.trial(name);
-      committed[c] = s.committed(name);
-    }
-  }
-  Mat3 committedAt(int i) const {
-    double v[9];
-    for (int c = 0; c < n; ++c) v[c] = committed[c][i];
-    return n == 6 ? fromSym6(v) : Mat3{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
-  }
-  void set(int i, const Mat3& a) {
-    double v[9];
-    if (n == 6) toSym6(a, v);
-    for (int c = 0; c < n; ++c) trial[c][i] = n == 6 ? v[c] : a[c];
-  }
-};
-
-void addTensorSpecs(std::vector<StateSpec>& s, const std::string& base, bool symmetric, bool output, bool identity) {
-  for (int c = 0; c < (symmetric ? 6 : 9); ++c) {
-    const bool diagonal = symmetric ? c < 3 : c % 4 == 0;
-    s.push_back({base + (symmetric ? kSym[c] : kFull[c]), Location::Node, true, output, identity && diagonal ? 1.0 : 0.0});
-  }
-}
 
 // 3D, or Plane Strain with a Thickness. No Plane Stress: its out-of-plane stretch would have to come from
 // the stress update's zero-stress condition; the parameter is not taken, so a deck with it is refused.
@@ -112,9 +80,12 @@ std::vector<std::unique_ptr<FieldOperator>> CorrespondenceMaterial::heatTerms(co
 
 std::vector<std::string> CorrespondenceMaterial::commonOutputs() {
   std::vector<std::string> out;
-  for (const char* c : kSym) out.push_back(std::string("Unrotated_Cauchy_Stress") + c);
+  for (const char* base : {"Unrotated_Cauchy_Stress", "Cauchy_Stress", "Unrotated_Rate_Of_Deformation"})
+    for (const char* c : kSym) out.push_back(std::string(base) + c);
   out.push_back("Von_Mises_Stress");
-  for (const char* c : kFull) out.push_back(std::string("Deformation_Gradient") + c);
+  for (const char* base : {"Deformation_Gradient", "Rotation_Tensor", "Left_Stretch_Tensor"})
+    for (const char* c : kFull) out.push_back(std::string(base) + c);
+  for (const char* c : {"X", "Y", "Z"}) out.push_back(std::string("Hourglass_Force_Density") + c);
   out.push_back("Stored_Elastic_Energy");
   out.push_back("Dissipated_Energy");
   return out;
@@ -124,12 +95,13 @@ std::vector<StateSpec> CorrespondenceMaterial::stateSpecs() const {
   std::vector<StateSpec> s;
   addTensorSpecs(s, "Unrotated_Cauchy_Stress", true, true, false);
   addTensorSpecs(s, "Deformation_Gradient", false, true, true);
-  addTensorSpecs(s, "Rotation_Tensor", false, false, true);
-  addTensorSpecs(s, "Left_Stretch_Tensor", false, false, true);
+  addTensorSpecs(s, "Rotation_Tensor", false, true, true);
+  addTensorSpecs(s, "Left_Stretch_Tensor", false, true, true);
   s.push_back({"Von_Mises_Stress", Location::Node, false, true});
   s.push_back({"Stored_Elastic_Energy", Location::Node, false, true});
   s.push_back({"Dissipated_Energy", Location::Node, true, true});
   s.push_back({"Hourglass_Work", Location::Node, true, false});  // part of Stored_Elastic_Energy
+  for (const StateSpec& m : outputStateSpecs()) s.push_back(m);
   for (const StateSpec& m : modelStateSpecs()) s.push_back(m);
   return s;
 }
@@ -146,6 +118,7 @@ double CorrespondenceMaterial::hourglassConstant(double horizon) const { return 
 void CorrespondenceMaterial::enableOutput(const std::string& name) const {
   if (name == "Stored_Elastic_Energy") storedWanted_ = true;
   if (name == "Dissipated_Energy") dissipatedWanted_ = true;
+  enableTensorOutput(name);
 }
 
 // 1/2 tau : C^-1 : tau = p^2 / (2 K) + s : s / (4 mu), p = tr(tau)/3, s = dev(tau).
@@ -200,8 +173,7 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   }
   // Phase 2: the model's stress update on the mechanical increment; phase 3: stress to force state, plus the
   // hourglass force.
-  if (alpha_ != 0.0) subtractThermalIncrement(fam, state, de);
-  updateStress(fam, state, tauN, de, tau);
+  stressUpdate(fam, state, R, tauN, de, tau);
   const double c = hourglassConstant(fam.horizon);
   // Energies per node (J; docs/materials.md, "Energy"). Foster et al. (2010)'s Eqs. 49-52 are rate forms of
   // Cauchy stress: the stress power per reference volume is J sigma : D = J tau : d (Eq. 18's unrotated d).
@@ -252,6 +224,17 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   }
 }
 
+// The optional outputs around the model's update: the rate before the thermal part leaves d (Peridigm's field is the
+// whole rate), the Cauchy stress after.
+void CorrespondenceMaterial::stressUpdate(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& R,
+                                          const std::vector<Mat3>& tauN, std::vector<Mat3>& de,
+                                          std::vector<Mat3>& tau) const {
+  writeRateOfDeformation(fam, state, de);
+  if (alpha_ != 0.0) subtractThermalIncrement(fam, state, de);
+  updateStress(fam, state, tauN, de, tau);
+  writeCauchyStress(fam, state, R, tau);
+}
+
 int CorrespondenceMaterial::exchangeWidth(const FamilyView& fam) const { return fam.band ? kBandRow : kGatherRow; }
 
 // With the Maximum Principal Stress damage model (fam.tensileStrength > 0) each owned node first decides its
@@ -260,9 +243,14 @@ int CorrespondenceMaterial::exchangeWidth(const FamilyView& fam) const { return 
 // sums its force without the broken bonds. The shape tensors of this evaluation left out only the base set's
 // bonds (fam.brokenN): a bond broken now leaves K and F from the next evaluation on (quasi-static: the break
 // rounds solve the step again with it, so the state a step commits is consistent).
-void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* y, StateStore&, double* force) const {
+void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* y, StateStore& state,
+                                           double* force) const {
   const bool stressDamage = fam.brokenN && fam.tensileStrength > 0.0;
   const std::size_t stride = static_cast<std::size_t>(fam.exchangeStride);
+  double* hgField[3];
+  hourglassFields(state, hgField);
+  double hgScratch[3];
+  double* hg = hgField[0] ? hgScratch : nullptr;
   for (int i = fam.begin; i < fam.end; ++i) {
     if (stressDamage) {
       const double s1i = fam.exchange[stride * i + kRowS1];
@@ -282,9 +270,11 @@ void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* 
       const double* row = fam.exchange + stride * i + kRowKinv;
       Mat3 Kinv;
       std::copy(row, row + 9, Kinv.begin());
-      addBandForce(fam, i, y, Kinv, fam.exchange, fam.exchangeStride, force, broken);
+      addBandForce(fam, i, y, Kinv, fam.exchange, fam.exchangeStride, force, broken, hg);
     } else
-      addGatheredForce(fam, i, y, fam.exchange, fam.exchangeStride, force, broken);
+      addGatheredForce(fam, i, y, fam.exchange, fam.exchangeStride, force, broken, hg);
+    if (hg)
+      for (int a = 0; a < 3; ++a) hgField[a][i] = hg[a];
   }
 }
 

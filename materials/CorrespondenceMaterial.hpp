@@ -9,7 +9,7 @@
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
 #include "ElasticModuli.hpp"
-#include "Tensor3.hpp"
+#include "core/Tensor3.hpp"
 
 namespace pf {
 
@@ -89,6 +89,22 @@ class CorrespondenceMaterial : public Material {
   // Set by enableOutput before the run (blocks share the material): the energy fields cost a little per node
   // and bond, so only runs that ask for them pay; they never change a force.
   mutable bool storedWanted_ = false, dissipatedWanted_ = false;
+  // Peridigm's tensor and vector outputs beyond the state the update needs (docs/output.md), in
+  // CorrespondenceOutputs.cpp: each computed only when an output asks (enableTensorOutput), none changes a force.
+  // Unrotated_Rate_Of_Deformation = d dt / dt with dt the time since this node's last commit
+  // (Correspondence_Time; a step of zero length keeps the committed rate); Cauchy_Stress = R tau R^T;
+  // Hourglass_Force_Density{X,Y,Z}: the hourglass part of the force density (completeForce).
+  std::vector<StateSpec> outputStateSpecs() const;
+  // subtractThermalIncrement and updateStress, with the rate and Cauchy stress outputs around them.
+  void stressUpdate(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& R,
+                    const std::vector<Mat3>& tauN, std::vector<Mat3>& de, std::vector<Mat3>& tau) const;
+  void enableTensorOutput(const std::string& name) const;
+  void writeRateOfDeformation(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& de) const;
+  void writeCauchyStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& R,
+                         const std::vector<Mat3>& tau) const;
+  // The trial arrays of Hourglass_Force_Density{X,Y,Z}, or three nulls when not asked for.
+  void hourglassFields(StateStore& state, double* out[3]) const;
+  mutable bool rateWanted_ = false, cauchyWanted_ = false, hourglassWanted_ = false;
 };
 
 }  // namespace pf

@@ -8,7 +8,7 @@
 // Sign convention: the paper's I (first invariant) and s are compression positive; the code's stresses
 // are tension positive. Here I = -tr(tau) and s = -dev(tau) internally; tau in and out is tension positive.
 // Scalar functions on plain values; the only throw is ConstitutiveFailure (no convergence).
-#include "Tensor3.hpp"
+#include "core/Tensor3.hpp"
 
 namespace pf {
 

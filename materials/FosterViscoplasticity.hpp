@@ -3,7 +3,7 @@
 // stress: elastic trial (Eqs. 49, 52), flow stress G = Y (1 + eps_p/eps_0)^(1/n) (1 + rate/rate_0)^(1/m)
 // (Eqs. 58-59) with the hardening at the step's start and the rate implicit (Eqs. 37, 61), radial return
 // (Eq. 50). Scalar functions on plain values; the only throw is ConstitutiveFailure (no convergence).
-#include "Tensor3.hpp"
+#include "core/Tensor3.hpp"
 
 namespace pf {
 

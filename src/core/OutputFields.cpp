@@ -38,6 +38,40 @@ bool isCoreVectorField(const std::string& name) { return listed(coreVectorFields
 bool isCoreScalarField(const std::string& name) { return listed(coreScalarFields(), name); }
 bool isGlobalField(const std::string& name) { return listed(globalFields(), name); }
 
+const std::vector<std::string>& tensorFields() {
+  static const std::vector<std::string> v = {"Deformation_Gradient", "Shape_Tensor_Inverse", "Left_Stretch_Tensor",
+                                             "Rotation_Tensor", "Unrotated_Rate_Of_Deformation", "Cauchy_Stress",
+                                             "Unrotated_Cauchy_Stress"};
+  return v;
+}
+
+bool isTensorField(const std::string& name) { return listed(tensorFields(), name); }
+
+const std::vector<std::string>& materialVectorFields() {
+  static const std::vector<std::string> v = {"Hourglass_Force_Density"};
+  return v;
+}
+
+bool isMaterialVectorField(const std::string& name) { return listed(materialVectorFields(), name); }
+
+bool isKinematicTensor(const std::string& name) {
+  return name == "Deformation_Gradient" || name == "Shape_Tensor_Inverse";
+}
+
+const std::vector<std::string>& tensorComponentSuffixes() {
+  static const std::vector<std::string> v = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+  return v;
+}
+
+std::string transposedComponentName(const std::string& name) {
+  const std::size_t n = name.size();
+  auto axis = [](char c) { return c == 'X' || c == 'Y' || c == 'Z'; };
+  if (n < 2 || !axis(name[n - 2]) || !axis(name[n - 1])) return name;
+  std::string t = name;
+  std::swap(t[n - 2], t[n - 1]);
+  return t;
+}
+
 const char* globalSourceField(const std::string& global) {
   if (global == "Global_Strain_Energy") return "Stored_Elastic_Energy";
   if (global == "Global_Dissipated_Energy") return "Dissipated_Energy";

@@ -10,7 +10,8 @@ namespace pf {
 const std::vector<std::string>& knownOutputVariables() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> n = coreVectorFields();
-    for (const auto* list : {&coreScalarFields(), &fieldScalarOutputs(), &globalFields()}) n.insert(n.end(), list->begin(), list->end());
+    for (const auto* list : {&coreScalarFields(), &fieldScalarOutputs(), &globalFields(), &tensorFields(),
+                              &materialVectorFields()}) n.insert(n.end(), list->begin(), list->end());
     for (const MaterialEntry& e : materialRegistry())
       for (const std::string& o : e.outputs)
         if (std::find(n.begin(), n.end(), o) == n.end()) n.push_back(o);
@@ -65,7 +66,12 @@ std::vector<ProbeSpec> probes(const PL& probes, bool dynamic, const std::string&
     s.at = {p.get("X"), p.get("Y"), p.get("Z")};
     s.variables = splitWords(p.text("Variables"));
     if (s.variables.empty()) fail(file, ppath, "'Variables' is empty");
-    for (const std::string& var : s.variables) checkVariable(var, dynamic, file, ppath, "Variables");
+    for (const std::string& var : s.variables) {
+      checkVariable(var, dynamic, file, ppath, "Variables");
+      if (isTensorField(var) || isMaterialVectorField(var))  // a history column is one number
+        fail(file, ppath, "'Variables' names '" + var + "', a tensor or vector: a probe takes one component ('" +
+                              var + (isTensorField(var) ? "XX" : "X") + "', ...)");
+    }
     out.push_back(s);
   }
   return out;

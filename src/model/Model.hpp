@@ -105,6 +105,12 @@ class Model {
   double admitYielding(double tol);
   void endYieldRounds() { yieldRounds_ = false; }
 
+  // Collective: per owned node (9 values each, row-major), the approximate deformation gradient F at displacements u
+  // (3 per owned node) and the shape tensor's inverse K^-1, from every bond of its family (Foster et al. 2010 Eqs.
+  // 10, 13; core/ShapeTensor.hpp) for any material: Peridigm's compute class Deformation_Gradient, which the output
+  // layer runs only at the steps it writes. Throws InputError naming the point if a family's K is singular.
+  void kinematicTensors(const double* u, double* F, double* Kinv);
+
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions

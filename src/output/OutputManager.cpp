@@ -48,6 +48,15 @@ OutputManager::OutputManager(const OutputSpec& out, const Deck& deck, Problem& p
       globals_.push_back(var);
       continue;
     }
+    if (isTensorField(var)) {
+      addTensor(var, out.listName + "/Output Variables");
+      continue;
+    }
+    if (isMaterialVectorField(var)) {
+      for (const char* c : {"X", "Y", "Z"}) requireComputed(var + c, out.listName + "/Output Variables");
+      nodalVectors_.push_back(var);
+      continue;
+    }
     requireComputed(var, out.listName + "/Output Variables");
     const std::vector<std::string> fieldOutputs = model_.fields().outputs();
     if (std::find(fieldOutputs.begin(), fieldOutputs.end(), var) != fieldOutputs.end()) nodalScalars_.push_back(var);
@@ -214,6 +223,10 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
       if (i >= b.begin && i < b.end) return b.horizon;
   // A variable some block's material computes (requireComputed) and this rank's blocks do not: 0, as at np 1
   // for the points of the other materials.
+  if (isMaterialVectorField(var)) {
+    const std::string c = var + "XYZ"[comp];
+    return model_.state().has(c) ? model_.state().committed(c)[i] : 0.0;
+  }
   return model_.state().has(var) ? model_.state().committed(var)[i] : 0.0;
 }
 
@@ -289,8 +302,17 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
     fields.push_back({[&, var](int i, double* out) { for (int c = 0; c < 3; ++c) out[c] = nodeValue(var, c, i, u, v, f); }, 3});
   for (const std::string& var : nodalScalars_)
     fields.push_back({[&, var](int i, double* out) { *out = nodeValue(var, 0, i, u, v, f); }, 1});
-  for (const std::string& var : elementScalars_)
-    fields.push_back({[&, var](int i, double* out) { *out = nodeValue(var, 0, i, u, v, f); }, 1});
+  if (!kinematic_.empty()) model_.kinematicTensors(u.data(), F_.data(), Kinv_.data());
+  for (const std::string& var : elementScalars_) {
+    const auto k = kinematic_.find(var);
+    if (k != kinematic_.end()) {
+      const double* a = k->second.first->data();
+      const int c = k->second.second;
+      fields.push_back({[a, c](int i, double* out) { *out = a[9 * i + c]; }, 1});
+      continue;
+    }
+    fields.push_back({[&, stored = storedComponent(var)](int i, double* out) { *out = nodeValue(stored, 0, i, u, v, f); }, 1});
+  }
   if (fields.empty()) {  // globals only: Peridigm's one-dummy-node file
     onRoot([&] { writer_->writeStep(time, {}, {}, {}, globals); });
     return;

@@ -77,6 +77,8 @@ class OutputManager : public StepObserver {
   void writeCoordinates();
   void addReactions(const OutputSpec& out);
   void addCompute(const ComputeSpec& spec);
+  void addTensor(const std::string& tensor, const std::string& where);
+  std::string storedComponent(const std::string& var) const;
   void findElementVariablesOfBlocks();
   void onRoot(const std::function<void()>& write, bool everyRank = false);
   void openFiles();
@@ -108,6 +110,10 @@ class OutputManager : public StepObserver {
   std::vector<std::string> nodalScalars_;  // the model's fields (Temperature, ...): nodal, as Peridigm writes them
   std::vector<Probe> probes_;
   std::vector<Reaction> reactions_;
+  // The element variables of a whole tensor the model computes (Model::kinematicTensors), each with its array (F_ or
+  // Kinv_, 9 per owned node) and component; the arrays are filled at each step written, only when some are asked for.
+  std::map<std::string, std::pair<const std::vector<double>*, int>> kinematic_;
+  std::vector<double> F_, Kinv_;
   std::map<int, std::vector<char>> elementVariablesOf_;  // per block id: which elementScalars_ it has
   ComputeClasses computes_;             // Peridigm's compute classes this list writes (globals)
   std::vector<double> computeValues_;   // their values at the step being written (historyRow)

@@ -77,6 +77,47 @@ void OutputManager::requireComputed(const std::string& var, const std::string& w
     for (const BlockModel& b : model_.blocks()) b.material->enableOutput(var);
 }
 
+// A whole tensor (core/OutputFields.hpp): its 9 components become element variables. Deformation_Gradient and
+// Shape_Tensor_Inverse come from the model's own computation for every block (Peridigm's compute class); the others
+// must be a material's node fields, stored whole or as a symmetric tensor's 6 components.
+void OutputManager::addTensor(const std::string& tensor, const std::string& where) {
+  const bool kinematic = isKinematicTensor(tensor);
+  if (kinematic && F_.empty()) {
+    // K does not change with u: a family too thin for it (a line of points) is the deck's error, told here once
+    // rather than at the first step written.
+    F_.assign(9 * static_cast<std::size_t>(model_.numOwned()), 0.0), Kinv_ = F_;
+    const std::vector<double> u0(static_cast<std::size_t>(model_.numDofs()), 0.0);
+    try {
+      model_.kinematicTensors(u0.data(), F_.data(), Kinv_.data());
+    } catch (const InputError& e) {
+      throw InputError(inputFile_ + ": " + where + ": '" + tensor + "': " + e.what());
+    }
+  }
+  const std::vector<std::string>& suffixes = tensorComponentSuffixes();
+  for (std::size_t c = 0; c < suffixes.size(); ++c) {
+    const std::string var = tensor + suffixes[c];
+    if (std::find(elementScalars_.begin(), elementScalars_.end(), var) != elementScalars_.end()) continue;
+    if (kinematic)
+      kinematic_[var] = {tensor == "Deformation_Gradient" ? &F_ : &Kinv_, static_cast<int>(c)};
+    else
+      try {
+        requireComputed(storedComponent(var), where);
+      } catch (const InputError&) {  // every rank throws it: the question is collective
+        throw InputError(inputFile_ + ": " + where + ": '" + tensor + "' is not computed by any material of this run");
+      }
+    elementScalars_.push_back(var);
+  }
+}
+
+// The node field that holds component var on this rank: var itself, or the transposed component of a symmetric
+// tensor's 6 stored ones (Unrotated_Cauchy_StressYX is stored as Unrotated_Cauchy_StressXY); var when neither.
+std::string OutputManager::storedComponent(const std::string& var) const {
+  const StateStore& state = model_.state();
+  if (state.has(var)) return var;
+  const std::string t = transposedComponentName(var);
+  return state.has(t) ? t : var;
+}
+
 // A global summed from a node field (core/OutputFields.hpp) needs that field on every node that can carry it:
 // a material field from every block's material (a block without it would drop out of the sum silently).
 // Collective (each rank checks its own blocks; a failure on one is every rank's error).
@@ -178,7 +219,10 @@ void OutputManager::findElementVariablesOfBlocks() {
   for (const BlockModel& b : model_.blocks()) {
     mine.push_back(b.blockId);
     for (const std::string& var : elementScalars_)
-      mine.push_back(isCoreScalarField(var) || declaresNodeField(*b.material, var) ? 1.0 : 0.0);
+      mine.push_back(isCoreScalarField(var) || kinematic_.count(var) || declaresNodeField(*b.material, var) ||
+                             declaresNodeField(*b.material, transposedComponentName(var))
+                         ? 1.0
+                         : 0.0);
   }
   const std::vector<double> all = model_.layout().comm().allGather(mine);
   elementVariablesOf_.clear();

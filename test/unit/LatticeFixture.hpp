@@ -85,6 +85,20 @@ inline std::vector<double> randomMotion(const Lattice& L, double amplitude, unsi
   return y;
 }
 
+// y = x + a smooth field + a deterministic per-node jitter, so that a correspondence model's hourglass forces are
+// not zero (3D; the z part is left out on a planar lattice).
+inline std::vector<double> jitteredMotion(const Lattice& L) {
+  std::vector<double> y(L.x);
+  for (int p = 0; p < L.numNodes; ++p) {
+    const double* x = &L.x[3 * p];
+    const double jitter = 1e-7 * std::sin(12.9898 * p + 78.233);
+    y[3 * p] += 1e-3 * x[0] + 2e-1 * x[1] * x[1] + jitter;
+    y[3 * p + 1] += -4e-4 * x[1] + 1e-1 * x[0] * x[1] - jitter;
+    if (!L.planar) y[3 * p + 2] += 3e-4 * x[2] + 1e-1 * x[0] * x[2] + 0.5 * jitter;
+  }
+  return y;
+}
+
 inline std::unique_ptr<pf::ElasticMaterial> makeElastic(pf::Dimension dim, double E, double nu,
                                                         double thickness) {
   pf::MaterialInput in;

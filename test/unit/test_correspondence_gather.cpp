@@ -25,19 +25,6 @@ std::unique_ptr<pf::Material> elastic(Dimension dim) {
   return pf::makeMaterial("Elastic Correspondence", v);
 }
 
-// y = x + a smooth field + a deterministic per-node jitter (so the hourglass forces are not zero).
-std::vector<double> deformed(const pftest::Lattice& L) {
-  std::vector<double> y(L.x);
-  for (int p = 0; p < L.numNodes; ++p) {
-    const double* x = &L.x[3 * p];
-    const double jitter = 1e-7 * std::sin(12.9898 * p + 78.233);
-    y[3 * p] += 1e-3 * x[0] + 2e-1 * x[1] * x[1] + jitter;
-    y[3 * p + 1] += -4e-4 * x[1] + 1e-1 * x[0] * x[1] - jitter;
-    if (!L.planar) y[3 * p + 2] += 3e-4 * x[2] + 1e-1 * x[0] * x[2] + 0.5 * jitter;
-  }
-  return y;
-}
-
 double maxAbs(const std::vector<double>& v) {
   double m = 0;
   for (double a : v) m = std::max(m, std::fabs(a));
@@ -64,7 +51,7 @@ TEST(CorrespondenceGather, EqualsScatterFormToRoundOff) {
     const pftest::Lattice L =
         pftest::makeLattice(planar ? 13 : 7, planar, 1e-3, 3.0, 1e-3, pf::Influence(pf::Influence::One), false);
     ASSERT_EQ(mat->exchangeWidth(L.view()), pf::kGatherRow);
-    const std::vector<double> y = deformed(L);
+    const std::vector<double> y = pftest::jitteredMotion(L);
     const std::vector<double> ref = force(*mat, L, y, 0);
     const double scale = maxAbs(ref);
     ASSERT_GT(scale, 0.0);
