@@ -8,7 +8,7 @@
 
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
-#include "ElasticModuli.hpp"
+#include "core/ElasticModuli.hpp"
 #include "core/Tensor3.hpp"
 
 namespace pf {

@@ -7,7 +7,7 @@
 
 #include "core/BondDamage.hpp"
 #include "core/InputError.hpp"
-#include "ElasticModuli.hpp"
+#include "core/ElasticModuli.hpp"
 #include "SolidParameters.hpp"
 
 namespace pf {

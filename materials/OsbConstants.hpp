@@ -10,7 +10,7 @@
 // (plane stress) and (kappa + mu/3) tr (plane strain) and sigma_dev = 2 mu dev, i.e. classical
 // elasticity; the unit tests verify it on a lattice.
 #include "core/Dimension.hpp"
-#include "ElasticModuli.hpp"
+#include "core/ElasticModuli.hpp"
 
 namespace pf {
 

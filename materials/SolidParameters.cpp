@@ -3,7 +3,7 @@
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "core/MaterialEntry.hpp"
-#include "ElasticModuli.hpp"
+#include "core/ElasticModuli.hpp"
 #include "HeatConduction.hpp"
 #include "PlasticHeating.hpp"
 

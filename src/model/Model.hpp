@@ -38,6 +38,7 @@ struct BlockModel {
   std::shared_ptr<const Expression> stretchOfTime = nullptr;
   // Initial Damage: the bonds of the block's nodes that cross these start broken (criticalStretch is infinite).
   std::shared_ptr<const BondFilters> initialBreaks = nullptr;
+  double bulkModulus = 0.0;  // K of its material (Peridigm's critical time step); 0: the material has no moduli
   bool damaged() const { return criticalStretch > 0.0 || tensileStrength > 0.0 || stretchOfTime != nullptr; }
 };
 

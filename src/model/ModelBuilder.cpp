@@ -8,6 +8,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "core/ElasticModuli.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "core/MaterialEntry.hpp"
@@ -30,8 +31,16 @@ struct BlockSpec {
   bool ndoBand = false;
   double tensileStrength = 0.0;  // Maximum Principal Stress damage; 0: not that model
   std::shared_ptr<const Expression> stretchOfTime;      // Time Dependent Critical Stretch
+  double bulkModulus = 0.0;                             // K of the material; 0: it has no moduli (Diffusion)
   std::shared_ptr<const BondFilters> initialBreaks;     // Initial Damage
 };
+
+// The bulk modulus of a material that has two of Peridigm's elastic constants (core/ElasticModuli.hpp), else 0.
+double bulkModulusOf(const MaterialSpec& m) {
+  for (const char* k : {"Bulk Modulus", "Shear Modulus", "Young's Modulus", "Poisson's Ratio"})
+    if (m.values.has(k)) return elasticModuliFrom(m.values).bulk;
+  return 0.0;
+}
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
 // cloud that no other group names (none left: the group is unused).
@@ -78,6 +87,7 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
                    d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
     if (operators.count(g.material)) spec.fieldOperators = operators[g.material];
     if (d) spec.stretchOfTime = d->stretchOfTime;
+    spec.bulkModulus = bulkModulusOf(deck.material(g.material));
     if (d && !d->initialBreaks.empty()) spec.initialBreaks = std::make_shared<const BondFilters>(d->initialBreaks);
     return spec;
   };
@@ -338,6 +348,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
     blockModels.push_back(
         BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
                    s.ndoBand, s.tensileStrength, s.fieldOperators, s.stretchOfTime, s.initialBreaks});
+    blockModels.back().bulkModulus = s.bulkModulus;
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;

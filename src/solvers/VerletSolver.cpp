@@ -9,6 +9,7 @@
 
 #include "ExplicitFieldStep.hpp"
 #include "FiniteCheck.hpp"
+#include "PeridigmTimeStep.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "model/Model.hpp"
@@ -25,8 +26,13 @@ SolverEntry VerletSolver::entry() {
   e.parameters = {S::real("Fixed dt", "time step; the run takes floor((Final Time − Initial Time) / dt) steps, as "
                                       "Peridigm; default: `Safety Factor` × the stable step estimate, shortened to end on "
                                       "Final Time; above that estimate a warning, above 2 × it an input error").positive(),
-                  S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ); above 1 a warning, above 2 "
-                                           "an input error (as `Fixed dt`)").byDefault("0.8").positive(),
+                  S::real("Safety Factor", "multiplies the stable step estimate; the step above the stiffness bound a "
+                                           "warning, above 2 × it an input error (as `Fixed dt`)").byDefault("0.8").positive(),
+                  S::text("Stable Step Estimate",
+                          "without `Fixed dt`: `Peridigm`'s critical step, min sqrt(2ρ / Σ V_j 18K/(πδ⁴|ξ|)), with "
+                          "Peridigm's floor((Final Time − Initial Time)/dt) steps; `Stiffness Bound`: 2/sqrt(max bound/ρ) "
+                          "of every material's own stiffness, dt shortened to end on Final Time")
+                      .byDefault("Peridigm").oneOf({"Peridigm", "Stiffness Bound"}),
                   S::flag("Allow Unstable Time Step",
                           "accept a `Fixed dt` or `Safety Factor` more than 2 × the stable step estimate (otherwise an "
                           "input error)")
@@ -35,6 +41,7 @@ SolverEntry VerletSolver::entry() {
     VerletOptions o;
     o.fixedDt = p.get("Fixed dt", 0.0);
     o.safetyFactor = p.get("Safety Factor");
+    o.peridigmEstimate = p.text("Stable Step Estimate") == "Peridigm";
     o.allowUnstable = p.flag("Allow Unstable Time Step");
     o.where = p.where();
     return std::unique_ptr<Solver>(new VerletSolver(o));
@@ -112,7 +119,8 @@ double VerletSolver::stableTimeStep(const Model& model, bool freeOnly) {
 double VerletSolver::timeStep(const Model& model, const ExplicitFieldStep* heat) const {
   if (opt_.fixedDt > 0) return opt_.fixedDt;
   // A coupled run steps at the mechanics' pace and sub-cycles the field; a thermal-only one at the field's.
-  return opt_.safetyFactor * (advances("Displacement") ? stableTimeStep(model) : heat->stableStep());
+  if (!advances("Displacement")) return opt_.safetyFactor * heat->stableStep();
+  return opt_.safetyFactor * (opt_.peridigmEstimate ? peridigmCriticalTimeStep(model) : stableTimeStep(model));
 }
 
 void VerletSolver::check(const Model& model) const {
@@ -122,7 +130,7 @@ void VerletSolver::check(const Model& model) const {
       throw InputError(opt_.where + ": a thermal-only run without conduction has no stable step: give 'Fixed dt'");
   }
   if (!advances("Displacement")) return;  // no mechanics: only the thermal step bounds dt
-  if (opt_.fixedDt <= 0) {
+  if (opt_.fixedDt <= 0 && !opt_.peridigmEstimate) {
     // The default step is Safety Factor x the estimate: bounded as a Fixed dt is (a factor of 1e300 would step
     // over the whole interval at once and end "done" with a blown-up state).
     char msg[160];
@@ -137,15 +145,18 @@ void VerletSolver::check(const Model& model) const {
   // Only points with a free component can go unstable: a point whose motion is prescribed in all three
   // directions is moved by its condition, not by the integrator (Peridigm's fully prescribed decks, the affine
   // material point). The default step (timeStep) still bounds every point, as Peridigm's does.
+  // Peridigm's estimate is checked as a Fixed dt is: it is no bound on every model's stiffness.
   const double stable = stableTimeStep(model, true);
   if (std::isinf(stable)) return;
-  char msg[200];
-  std::snprintf(msg, sizeof msg, "Fixed dt = %g exceeds the stable time step estimate %g (%.3g times)", opt_.fixedDt,
-                stable, opt_.fixedDt / stable);
-  if (opt_.fixedDt > kRefuseFactor * stable && !opt_.allowUnstable)
+  const double dt = opt_.fixedDt > 0 ? opt_.fixedDt : opt_.safetyFactor * peridigmCriticalTimeStep(model);
+  char msg[240];
+  std::snprintf(msg, sizeof msg, "%s = %g exceeds the stable time step estimate %g (%.3g times)",
+                opt_.fixedDt > 0 ? "Fixed dt" : "'Safety Factor' x Peridigm's critical step", dt, stable, dt / stable);
+  if (dt > kRefuseFactor * stable && !opt_.allowUnstable)
     throw InputError(opt_.where + ": " + msg + "; above " + std::to_string(static_cast<int>(kRefuseFactor)) +
-                     " times it is refused unless 'Allow Unstable Time Step' is true");
-  if (opt_.fixedDt > stable) warn(opt_.where + ": " + msg + "; the run may go unstable");
+                     " times it is refused unless 'Allow Unstable Time Step' is true (or 'Stable Step Estimate' = "
+                     "'Stiffness Bound')");
+  if (dt > stable) warn(opt_.where + ": " + msg + "; the run may go unstable");
 }
 
 // The step's end state at t: the force at u (mechanics) or only the conditions of t, then the field advanced over
@@ -175,7 +186,8 @@ long VerletSolver::stepCount(double duration, double& dt, const SolverResume* re
   // A Fixed dt takes floor(duration / dt) steps, as Peridigm (Peridigm.cpp, executeExplicit): a quotient that rounds
   // below an integer (0.01 / 2e-5 = 499.99999999999994) takes one step less, ending before the end time. The default
   // step is shortened to land on it (ceil, a quotient within 1e-9 above an integer taken as it).
-  if (opt_.fixedDt > 0) return std::max(1L, static_cast<long>(std::floor(duration / dt)));
+  if (opt_.fixedDt > 0 || (opt_.peridigmEstimate && advances("Displacement")))
+    return std::max(1L, static_cast<long>(std::floor(duration / dt)));
   const long steps = std::max(1L, static_cast<long>(std::ceil(duration / dt - 1e-9)));
   dt = duration / steps;
   return steps;

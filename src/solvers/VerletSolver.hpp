@@ -1,7 +1,8 @@
 #pragma once
-// Explicit velocity-Verlet (central difference) time integration with the lumped density. The time
-// step is "Fixed dt" or Safety Factor x the Gershgorin bound 2/sqrt(max_i bound_i/rho_i). check(): a Fixed dt
-// above the bound warns, above kRefuseFactor x the bound is an input error unless Allow Unstable Time Step; a
+// Explicit velocity-Verlet (central difference) time integration with the lumped density. The time step is
+// "Fixed dt" or Safety Factor x Peridigm's critical step estimate (default) or the Gershgorin bound
+// 2/sqrt(max_i bound_i/rho_i). check(): a step above the bound warns, above kRefuseFactor x the bound is an
+// input error unless Allow Unstable Time Step; a
 // non-finite displacement, velocity or force stops the run (SolverFailure) before the step is reported. With
 // `Solve For Temperature` the field takes explicit sub-steps after each force evaluation (ExplicitFieldStep), with
 // `Solve For Displacement` false only those (a thermal-only run).
@@ -17,6 +18,7 @@ class ExplicitFieldStep;
 struct VerletOptions {
   double fixedDt = 0.0;       // > 0: use this dt
   double safetyFactor = 0.8;  // used when fixedDt == 0
+  bool peridigmEstimate = true;  // without fixedDt: Peridigm's critical step (PeridigmTimeStep.hpp), else the bound
   bool allowUnstable = false; // accept fixedDt > kRefuseFactor x the stable step
   std::string where;          // the deck list, for input errors ("input.xml: Solver/Verlet")
 };

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "core/InputError.hpp"
-#include "core/MaterialEntry.hpp"
+#include "InputError.hpp"
+#include "MaterialEntry.hpp"
 
 namespace pf {
 
