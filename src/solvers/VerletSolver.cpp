@@ -64,11 +64,11 @@ struct ForceTimer {
   }
 };
 
-// The acceleration the next half step uses: zero on prescribed components, (f + b) / rho elsewhere.
+// The acceleration the next half step uses, (f + b) / rho, prescribed components too (their conditions then
+// replace u and v; see the step loop).
 void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& b,
                          std::vector<double>& a) {
-  const std::vector<char>& fixed = model.prescribedMask();
-  for (std::size_t k = 0; k < a.size(); ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
+  for (std::size_t k = 0; k < a.size(); ++k) a[k] = (f[k] + b[k]) / model.density()[k / 3];
 }
 
 }  // namespace
@@ -202,9 +202,12 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, u, f); });
     if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
+    // Prescribed components too get the second half kick, as Peridigm's executeExplicit: its condition sets only
+    // the half-step velocity, so the velocity it writes there is (u - u_prev)/dt + dt/2 (f + b)/rho. The next
+    // step's condition replaces u and v there, so the motion is the same either way; only the output differs.
     for (int k = 0; k < n; ++k) {
-      a[k] = fixed[k] || !mechanics ? 0.0 : (f[k] + b[k]) / rho[k / 3];
-      if (!fixed[k]) v[k] += 0.5 * dt * a[k];
+      a[k] = mechanics ? (f[k] + b[k]) / rho[k / 3] : 0.0;
+      v[k] += 0.5 * dt * a[k];
       probe += u[k] + v[k] + f[k];
     }
     requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);

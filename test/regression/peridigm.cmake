@@ -98,7 +98,10 @@ set(peridigm_suite_cases
   "MultipleHorizons MultipleHorizons.xml MultipleHorizons MultipleHorizons.comp"
   "Body_Force__QS_NOX Body_Force_QS_NOX.xml Body_Force_QS_NOX Body_Force.comp"
   "ThermalExpansionCube ThermalExpansionCube.xml ThermalExpansionCube ThermalExpansionCube.comp"
-  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp")
+  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp"
+  "Body_Force__Explicit Body_Force_Explicit.xml Body_Force_Explicit Body_Force.comp"
+  "Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.xml Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.comp"
+  "ThermalExpansionBondFailure ThermalExpansionBondFailure.xml ThermalExpansionBondFailure ThermalExpansionBondFailure.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)
