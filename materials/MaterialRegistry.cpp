@@ -4,6 +4,7 @@
 
 #include "DiffusionMaterial.hpp"
 #include "DruckerPragerCorrespondenceMaterial.hpp"
+#include "ElasticBondBasedMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
@@ -19,6 +20,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticPlasticMaterial::entry(),
       HardeningPlasticity::entry(),
       MicroelasticMaterial::entry(),
+      ElasticBondBasedMaterial::entry(),
       ElasticCorrespondenceMaterial::entry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),

@@ -2,12 +2,14 @@
 // the default layer width, node sets the names conditions and reactions refer to).
 #include "DeckParser.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
 
 #include "Input.hpp"
 #include "Sections.hpp"
+#include "core/Log.hpp"
 #include "core/SolverEntry.hpp"
 
 namespace pf {
@@ -45,21 +47,44 @@ std::vector<SolverSpec> solvers(const PL& p, const std::string& file) {
   return out;
 }
 
+// Whether `later` writes nothing `first` does not: the same file kind and steps, no probes or reactions of its
+// own, its variables among first's.
+bool writesNothingMore(const OutputSpec& later, const OutputSpec& first) {
+  if (later.exodus != first.exodus || later.frequency != first.frequency || later.firstStep != first.firstStep ||
+      later.lastStep != first.lastStep || !later.probes.empty() || later.reactionsGiven)
+    return false;
+  for (const std::string& v : later.variables)
+    if (std::find(first.variables.begin(), first.variables.end(), v) == first.variables.end()) return false;
+  return true;
+}
+
 std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<std::string>& nodeSets) {
   std::vector<OutputSpec> out;
   std::set<std::string> labels;
   for (const ComputeSpec& c : deck.computes) labels.insert(c.label);
-  std::map<std::string, std::string> files;  // Output Filename -> list
+  std::map<std::string, std::size_t> files;  // Output Filename -> its list in out
   for (const std::string& n : numberedLists(p, "Output")) {
-    out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels));
-    const std::string& f = out.back().filename;
-    if (files.count(f)) fail(deck.file, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");
-    files[f] = n;
+    OutputSpec o = parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels);
+    const auto it = files.find(o.filename);
+    if (it == files.end()) {
+      files[o.filename] = out.size();
+      out.push_back(std::move(o));
+      continue;
+    }
+    // Peridigm's suite decks repeat the first list's globals in a second list of the same file; Peridigm's gold
+    // file is the first list's. Such a list is dropped; any other sharing is an error (which list's content
+    // Peridigm's file would keep is not known).
+    const OutputSpec& first = out[it->second];
+    if (!writesNothingMore(o, first))
+      fail(deck.file, n, "'Output Filename' = '" + o.filename + "' is also the file of '" + first.listName +
+                             "' (allowed only for a list that writes a subset of its variables at the same steps)");
+    warn(deck.file + ": " + n + ": 'Output Filename' = '" + o.filename + "' is also the file of '" + first.listName +
+         "', which writes all of its variables at the same steps: the file is '" + first.listName + "''s (as Peridigm's)");
   }
   return out;
 }
 
-// A 2D material's Thickness enters its constants, the discretization's the points' volumes: two different
+// A 2D material's Thickness (Height) enters its constants, the discretization's the points' volumes: two different
 // values would give a model that is neither (the forces follow the volumes). A Text File mesh holds its
 // thickness in its volumes only, and is not checked.
 void requireOneThickness(const Deck& deck) {
@@ -67,10 +92,11 @@ void requireOneThickness(const Deck& deck) {
   if (!(h > 0.0)) return;
   for (const BlockGroupSpec& b : deck.blocks) {
     const MaterialSpec& m = deck.material(b.material);
-    if (!m.values.has("Thickness")) continue;
-    const double hm = m.values.get("Thickness");
+    const std::string name = m.values.has("Height") ? "Height" : "Thickness";  // Elastic Bond Based's: Height
+    if (!m.values.has(name)) continue;
+    const double hm = m.values.get(name);
     if (std::fabs(hm - h) > 1e-12 * h)
-      fail(deck.file, "Materials/" + m.name, "'Thickness' = " + numberText(hm) + " differs from the Discretization's " +
+      fail(deck.file, "Materials/" + m.name, "'" + name + "' = " + numberText(hm) + " differs from the Discretization's " +
                                                  numberText(h) + " (the points' volumes): give both the same value");
   }
 }

@@ -101,7 +101,10 @@ set(peridigm_suite_cases
   "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp"
   "Body_Force__Explicit Body_Force_Explicit.xml Body_Force_Explicit Body_Force.comp"
   "Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.xml Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.comp"
-  "ThermalExpansionBondFailure ThermalExpansionBondFailure.xml ThermalExpansionBondFailure ThermalExpansionBondFailure.comp")
+  "ThermalExpansionBondFailure ThermalExpansionBondFailure.xml ThermalExpansionBondFailure ThermalExpansionBondFailure.comp"
+  "ElasticBondBased__ElasticBondBased3D ElasticBondBased3D.yaml ElasticBondBased3D ElasticBondBased.comp"
+  "ElasticBondBased__ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.yaml ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.comp"
+  "ElasticBondBased__ElasticBondBased2DPlaneStress ElasticBondBased2DPlaneStress.yaml ElasticBondBased2DPlaneStress ElasticBondBased2DPlaneStress.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)
