@@ -22,7 +22,7 @@ SolverEntry VerletSolver::entry() {
   e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
   e.dynamic = true;
   e.mayAlsoSolve = {"Temperature"};
-  e.parameters = {S::real("Fixed dt", "time step; default: `Safety Factor` × the stable step estimate; above that estimate "
+  e.parameters = {S::real("Fixed dt", "time step, taking floor((Final Time − Initial Time) / dt) steps as Peridigm; default: `Safety Factor` × the stable step estimate; above that estimate "
                                       "a warning, above 2 × it an input error").positive(),
                   S::real("Safety Factor", "multiplies the stable step 2/sqrt(max bound/ρ); above 1 a warning, above 2 "
                                            "an input error (as `Fixed dt`)").byDefault("0.8").positive(),
@@ -69,6 +69,14 @@ struct ForceTimer {
 void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& b,
                          std::vector<double>& a) {
   for (std::size_t k = 0; k < a.size(); ++k) a[k] = (f[k] + b[k]) / model.density()[k / 3];
+}
+
+// A Fixed dt takes Peridigm's floor((t1 - t0)/dt) steps (executeExplicit), the quotient's rounding included:
+// Final Time 1e-7 with dt 2e-9 is 49 steps there (the quotient is 49.99999999999999), and its output steps
+// follow. Otherwise the estimate is shortened to land exactly on t1: the next whole number of steps.
+long stepCount(double t0, double t1, double dt, bool fixed) {
+  const double q = (t1 - t0) / dt;
+  return std::max(1L, static_cast<long>(fixed ? std::floor(q) : std::ceil(q - 1e-9)));
 }
 
 }  // namespace
@@ -151,7 +159,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   const bool mechanics = advances("Displacement");
   std::unique_ptr<ExplicitFieldStep> heat = heatStep(model);
   double dt = timeStep(model, heat.get());
-  long steps = std::max(1L, static_cast<long>(std::ceil((t1 - t0) / dt - 1e-9)));
+  long steps = stepCount(t0, t1, dt, opt_.fixedDt > 0);
   if (opt_.fixedDt <= 0) dt = (t1 - t0) / steps;  // land exactly on t1
   if (resume) {  // the interrupted run's step (its stable-step estimate may differ in the last bit at another np)
     dt = resume->scalar("dt");
@@ -191,6 +199,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     auto start = Clock::now();
     const double t = (s == steps && opt_.fixedDt <= 0) ? t1 : t0 + s * dt;
     uPrev = u;
+    const double rate = 1.0 / (t - (t0 + (s - 1) * dt));  // Peridigm's DirichletIncrementBC: change / (t - t_prev)
     for (int k = 0; k < n; ++k) {
       v[k] += 0.5 * dt * a[k];
       u[k] += dt * v[k];
@@ -198,13 +207,12 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     if (!model.rigidWalls().empty()) model.enforceRigidWalls(dt, u.data(), v.data(), a.data());
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
-      if (fixed[k]) v[k] = (u[k] - uPrev[k]) / dt;
+      if (fixed[k]) v[k] = (u[k] - uPrev[k]) * rate;
     forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, u, f); });
     if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
-    // Prescribed components too get the second half kick, as Peridigm's executeExplicit: its condition sets only
-    // the half-step velocity, so the velocity it writes there is (u - u_prev)/dt + dt/2 (f + b)/rho. The next
-    // step's condition replaces u and v there, so the motion is the same either way; only the output differs.
+    // Prescribed components too get the second half kick, as Peridigm's executeExplicit (its condition sets only the
+    // half-step velocity); the next step's condition replaces u and v there: only the written velocity differs.
     for (int k = 0; k < n; ++k) {
       a[k] = mechanics ? (f[k] + b[k]) / rho[k / 3] : 0.0;
       v[k] += 0.5 * dt * a[k];
