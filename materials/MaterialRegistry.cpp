@@ -7,6 +7,7 @@
 #include "ElasticBondBasedMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
+#include "ElasticPlasticCorrespondenceMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
 #include "HardeningPlasticity.hpp"
 #include "MicroelasticMaterial.hpp"
@@ -22,6 +23,8 @@ const std::vector<MaterialEntry>& materialRegistry() {
       MicroelasticMaterial::entry(),
       ElasticBondBasedMaterial::entry(),
       ElasticCorrespondenceMaterial::entry(),
+      ElasticPlasticCorrespondenceMaterial::entry(),
+      ElasticPlasticCorrespondenceMaterial::hardeningEntry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
       DiffusionMaterial::entry(),

@@ -2,7 +2,6 @@
 // the default layer width, node sets the names conditions and reactions refer to).
 #include "DeckParser.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <map>
 #include <set>
@@ -47,17 +46,6 @@ std::vector<SolverSpec> solvers(const PL& p, const std::string& file) {
   return out;
 }
 
-// Whether `later` writes nothing `first` does not: the same file kind and steps, no probes or reactions of its
-// own, its variables among first's.
-bool writesNothingMore(const OutputSpec& later, const OutputSpec& first) {
-  if (later.exodus != first.exodus || later.frequency != first.frequency || later.firstStep != first.firstStep ||
-      later.lastStep != first.lastStep || !later.probes.empty() || later.reactionsGiven)
-    return false;
-  for (const std::string& v : later.variables)
-    if (std::find(first.variables.begin(), first.variables.end(), v) == first.variables.end()) return false;
-  return true;
-}
-
 std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<std::string>& nodeSets) {
   std::vector<OutputSpec> out;
   std::set<std::string> labels;
@@ -71,15 +59,12 @@ std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<st
       out.push_back(std::move(o));
       continue;
     }
-    // Peridigm's suite decks repeat the first list's globals in a second list of the same file; Peridigm's gold
-    // file is the first list's. Such a list is dropped; any other sharing is an error (which list's content
-    // Peridigm's file would keep is not known).
-    const OutputSpec& first = out[it->second];
-    if (!writesNothingMore(o, first))
-      fail(deck.file, n, "'Output Filename' = '" + o.filename + "' is also the file of '" + first.listName +
-                             "' (allowed only for a list that writes a subset of its variables at the same steps)");
-    warn(deck.file + ": " + n + ": 'Output Filename' = '" + o.filename + "' is also the file of '" + first.listName +
-         "', which writes all of its variables at the same steps: the file is '" + first.listName + "''s (as Peridigm's)");
+    // Peridigm's suite decks give a second list of the same file (the first's globals again, or other globals at
+    // another frequency); Peridigm's gold file is then the first list's alone (ElasticBondBased*,
+    // ElasticPlasticCorrespondenceFullyPrescribedTension, ...). So the later list is dropped, with a warning.
+    warn(deck.file + ": " + n + ": 'Output Filename' = '" + o.filename + "' is also the file of '" +
+         out[it->second].listName + "': the file is '" + out[it->second].listName + "''s alone (as Peridigm's); '" +
+         n + "' writes nothing");
   }
   return out;
 }

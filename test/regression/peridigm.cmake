@@ -118,3 +118,29 @@ foreach(entry ${peridigm_suite_cases})
       ${PERIDIGM_SUITE}/${case}/${out}_gold.e ${PERIDIGM_SUITE}/${case}/${comp})
   endforeach()
 endforeach()
+
+# Peridigm's J2 correspondence models against Peridigm's gold with the outputs Periforge writes: these decks still
+# stop on Peridigm's tensor outputs (Deformation_Gradient, Cauchy_Stress, ... as whole tensors, Hourglass_Force_Density),
+# so test/regression/peridigm_models/reduced_vs_gold.py drops those lines from a copy of the deck and of the .comp
+# and compares everything else (Displacement, Velocity, Force, Von_Mises_Stress, Equivalent_Plastic_Strain).
+set(peridigm_reduced_cases
+  "ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.xml ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.comp"
+  "IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.comp"
+  "IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.comp")
+foreach(entry ${peridigm_reduced_cases})
+  separate_arguments(e UNIX_COMMAND "${entry}")
+  list(GET e 0 case)
+  list(GET e 1 deck)
+  list(GET e 2 out)
+  list(GET e 3 comp)
+  foreach(np 1 2)
+    set(name peridigm_reduced_${case}_np${np}_vs_gold)
+    set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
+    file(MAKE_DIRECTORY ${wd})
+    periforge_shared_guard(guard ${PERIDIGM_SUITE}/${case}/${deck})
+    add_test(NAME ${name} COMMAND ${guard} ${PY} ${REG}/peridigm_models/reduced_vs_gold.py ${PERIDIGM_SUITE}/${case}
+      ${deck} ${out} ${comp} ${np} ${PERIFORGE_EXE} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${MPIRUN} WORKING_DIRECTORY ${wd})
+    set_tests_properties(${name} PROPERTIES LABELS "regression" PROCESSORS ${np})
+    periforge_mark_shared(${name} "${guard}")
+  endforeach()
+endforeach()
