@@ -80,6 +80,14 @@ endforeach()
 # runs every case and prints the table; a case joins this list when it passes there at both np.
 # Each entry: case folder, deck, output name (its gold is <output>_gold.e), .comp file.
 set(PERIDIGM_SUITE ${PERIFORGE_SHARED_DIR}/reference/peridigm-suite)
+# The fields of one entry: case folder, deck, output name, .comp file.
+macro(peridigm_case_fields entry)
+  separate_arguments(e UNIX_COMMAND "${entry}")
+  list(GET e 0 case)
+  list(GET e 1 deck)
+  list(GET e 2 out)
+  list(GET e 3 comp)
+endmacro()
 set(peridigm_suite_cases
   "Bar_OneBlock_OneMaterial_QS Bar.xml Bar Bar.comp"
   "Bar_TwoBlocks_OneMaterial_QS Bar.xml Bar Bar.comp"
@@ -106,11 +114,7 @@ set(peridigm_suite_cases
   "ElasticBondBased__ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.yaml ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.comp"
   "ElasticBondBased__ElasticBondBased2DPlaneStress ElasticBondBased2DPlaneStress.yaml ElasticBondBased2DPlaneStress ElasticBondBased2DPlaneStress.comp")
 foreach(entry ${peridigm_suite_cases})
-  separate_arguments(e UNIX_COMMAND "${entry}")
-  list(GET e 0 case)
-  list(GET e 1 deck)
-  list(GET e 2 out)
-  list(GET e 3 comp)
+  peridigm_case_fields("${entry}")
   foreach(np 1 2)
     periforge_run(peridigm_suite_${case}_np${np} ${PERIDIGM_SUITE}/${case}/${deck} ${np})
     periforge_check(peridigm_suite_${case}_np${np}_vs_gold peridigm_suite_${case}_np${np}
@@ -128,11 +132,7 @@ set(peridigm_reduced_cases
   "IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.comp"
   "IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.comp")
 foreach(entry ${peridigm_reduced_cases})
-  separate_arguments(e UNIX_COMMAND "${entry}")
-  list(GET e 0 case)
-  list(GET e 1 deck)
-  list(GET e 2 out)
-  list(GET e 3 comp)
+  peridigm_case_fields("${entry}")
   foreach(np 1 2)
     set(name peridigm_reduced_${case}_np${np}_vs_gold)
     set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
