@@ -59,12 +59,35 @@ void requirePositiveJacobian(const FamilyView& fam, int i, const double* y, cons
   throw ConstitutiveFailure(buf);
 }
 
-PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {
-  Mat3 FmidInv;
-  if (!(inverse(0.5 * (Fn + F), FmidInv) > 0.0))
+namespace {
+
+// Omega dt from a left stretch V and the increments D dt, W dt: z_i = e_ijk (V D)_jk, w_i = -e_ijk W_jk / 2,
+// omega = w + (tr V I - V)^-1 z, Omega_ij = e_ikj omega_k (T&F Eqs. 10-13; Peridigm's correspondence.cxx the same).
+Mat3 spinIncrement(const Mat3& V, const Mat3& D, const Mat3& W) {
+  const Mat3 A = mul(V, D);
+  const double z[3] = {A[5] - A[7], A[6] - A[2], A[1] - A[3]};
+  const double w[3] = {W[7], W[2], W[3]};
+  Mat3 Minv;
+  if (!(std::fabs(inverse(trace(V) * identity3() - V, Minv)) > 0.0))
+    throw ConstitutiveFailure("correspondence model: tr(V) I - V is singular in the Flanagan-Taylor update");
+  double om[3];
+  for (int a = 0; a < 3; ++a) om[a] = w[a] + Minv[3 * a] * z[0] + Minv[3 * a + 1] * z[1] + Minv[3 * a + 2] * z[2];
+  return Mat3{0, -om[2], om[1], om[2], 0, -om[0], -om[1], om[0], 0};
+}
+
+// L dt = (F - F_n) G^-1 for G = F_mid (Periforge) or F (Peridigm).
+Mat3 velocityGradientIncrement(const Mat3& Fn, const Mat3& F, const Mat3& G) {
+  Mat3 Ginv;
+  if (!(inverse(G, Ginv) > 0.0))
     throw ConstitutiveFailure("correspondence model: the deformation gradient is not invertible with det > 0 "
                               "(a family turned inside out)");
-  const Mat3 L = mul(F - Fn, FmidInv);  // L dt
+  return mul(F - Fn, Ginv);
+}
+
+}  // namespace
+
+PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {
+  const Mat3 L = velocityGradientIncrement(Fn, F, 0.5 * (Fn + F));  // L dt
   const Mat3 D = sym(L), W = skew(L);
   // Cayley map of a skew matrix: exactly orthogonal, and for a rigid rotation increment Q (where D = 0 and
   // W dt = 2 (Q - I)(Q + I)^-1) it returns Q itself.
@@ -73,29 +96,32 @@ PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const 
     inverse(identity3() - 0.5 * S, inv);  // I - S/2 is invertible for every skew S
     return mul(inv, identity3() + 0.5 * S);
   };
-  // Omega dt from a left stretch V: z_i = e_ijk (V D)_jk, w_i = -e_ijk W_jk / 2, omega = w + (tr V I - V)^-1 z,
-  // Omega_ij = e_ikj omega_k (T&F Eqs. 10-13).
-  auto spin = [&](const Mat3& V) {
-    const Mat3 A = mul(V, D);
-    const double z[3] = {A[5] - A[7], A[6] - A[2], A[1] - A[3]};
-    const double w[3] = {W[7], W[2], W[3]};
-    Mat3 Minv;
-    if (!(std::fabs(inverse(trace(V) * identity3() - V, Minv)) > 0.0))
-      throw ConstitutiveFailure("correspondence model: tr(V) I - V is singular in the Flanagan-Taylor update");
-    double om[3];
-    for (int a = 0; a < 3; ++a) om[a] = w[a] + Minv[3 * a] * z[0] + Minv[3 * a + 1] * z[1] + Minv[3 * a + 2] * z[2];
-    return Mat3{0, -om[2], om[1], om[2], 0, -om[0], -om[1], om[0], 0};
-  };
   // V enters the spin at the half step: a first pass with V_n predicts R there, V_h = sym(F_mid R_h^T); with
   // V_n alone the update is first order (the error in R halves with dt instead of quartering).
   const Mat3 Fmid = 0.5 * (Fn + F);
-  const Mat3 Vh = sym(mulNT(Fmid, mul(cayley(0.5 * spin(Vn)), Rn)));
-  const Mat3 Om = spin(Vh);
+  const Mat3 Vh = sym(mulNT(Fmid, mul(cayley(0.5 * spinIncrement(Vn, D, W)), Rn)));
+  const Mat3 Om = spinIncrement(Vh, D, W);
   PolarUpdate out;
   out.R = mul(cayley(Om), Rn);
   const Mat3 Rh = mul(cayley(0.5 * Om), Rn);
   out.V = sym(mulNT(F, out.R));
   out.dUnrot = mulTN(Rh, mul(D, Rh));
+  return out;
+}
+
+PolarUpdate peridigmPolarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {
+  const Mat3 L = velocityGradientIncrement(Fn, F, F);  // Fdot F^-1 dt, Fdot dt = F - F_n
+  const Mat3 D = sym(L), W = skew(L);
+  const Mat3 Om = spinIncrement(Vn, D, W);  // with V_n: first order
+  // Peridigm's Q = I + sin(t)/t Om - (1 - cos t)/t^2 Om^2, t = |omega dt| (its sign of the second term; for a
+  // step's small t the difference from the exponential map is O(t^2)).
+  const double t2 = 0.5 * ddot(Om, Om), t = std::sqrt(t2);
+  Mat3 Q = identity3();
+  if (t > 0.0) Q = Q + (std::sin(t) / t) * Om - ((1.0 - std::cos(t)) / t2) * mul(Om, Om);
+  PolarUpdate out;
+  out.R = mul(Q, Rn);
+  out.V = Vn + mul(L, Vn) - mul(Vn, Om);  // V_n + dt (L V_n - V_n Omega)
+  out.dUnrot = mulTN(out.R, mul(D, out.R));
   return out;
 }
 

@@ -143,6 +143,10 @@ Mat3 CorrespondenceMaterial::elasticIncrement(const Mat3& de) const {
   return s;
 }
 
+PolarUpdate CorrespondenceMaterial::polarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) const {
+  return peridigmKinematics() ? peridigmPolarUpdate(Fn, F, Rn, Vn) : flanaganTaylor(Fn, F, Rn, Vn);
+}
+
 void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                           double* force) const {
   const bool planar = isPlanar(dim_);
@@ -166,7 +170,7 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
     else if (!tryShapeAndGradient(fam, i, y, planar, sg))
       detached[k] = 1, sg.Kinv = Mat3{}, sg.F = Fs.committedAt(i);  // no increment: the stress update is trivial
     if (detached.empty() || !detached[k]) requirePositiveJacobian(fam, i, y, sg.F);
-    const PolarUpdate pu = flanaganTaylor(Fs.committedAt(i), sg.F, Rs.committedAt(i), Vs.committedAt(i));
+    const PolarUpdate pu = polarUpdate(Fs.committedAt(i), sg.F, Rs.committedAt(i), Vs.committedAt(i));
     Kinv[k] = sg.Kinv, F[k] = sg.F, R[k] = pu.R, de[k] = pu.dUnrot, tauN[k] = taus.committedAt(i);
     if (dissipatedWanted_) Jn[k] = det(Fs.committedAt(i));
     Fs.set(i, sg.F), Rs.set(i, pu.R), Vs.set(i, pu.V);

@@ -8,6 +8,7 @@
 
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
+#include "CorrespondenceKinematics.hpp"
 #include "core/ElasticModuli.hpp"
 #include "core/Tensor3.hpp"
 
@@ -63,6 +64,9 @@ class CorrespondenceMaterial : public Material {
   virtual void updateStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& tauN,
                             const std::vector<Mat3>& de, std::vector<Mat3>& tau) const = 0;
   virtual std::vector<StateSpec> modelStateSpecs() const { return {}; }
+  // Peridigm's first-order polar update (peridigmPolarUpdate) instead of the midpoint Flanagan-Taylor one: the
+  // models whose suite decks compare with Peridigm's gold to round-off.
+  virtual bool peridigmKinematics() const { return false; }
 
   // Hooke's law on an increment: lambda tr(de) I + 2 mu de = K tr(de) I + 2 mu dev(de).
   Mat3 elasticIncrement(const Mat3& de) const;
@@ -75,6 +79,8 @@ class CorrespondenceMaterial : public Material {
   virtual Mat3 elasticStrain(const Mat3& dtau) const;
 
  private:
+  // flanaganTaylor or, for peridigmKinematics(), peridigmPolarUpdate.
+  PolarUpdate polarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) const;
   ElasticModuli moduli_;
   double thickness_ = 0.0;  // before dim_: its initialiser writes it
   Dimension dim_;

@@ -4,8 +4,10 @@
 
 #include "DiffusionMaterial.hpp"
 #include "DruckerPragerCorrespondenceMaterial.hpp"
+#include "ElasticBondBasedMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
+#include "ElasticPlasticCorrespondenceMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
 #include "HardeningPlasticity.hpp"
 #include "MicroelasticMaterial.hpp"
@@ -19,7 +21,10 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticPlasticMaterial::entry(),
       HardeningPlasticity::entry(),
       MicroelasticMaterial::entry(),
+      ElasticBondBasedMaterial::entry(),
       ElasticCorrespondenceMaterial::entry(),
+      ElasticPlasticCorrespondenceMaterial::entry(),
+      ElasticPlasticCorrespondenceMaterial::hardeningEntry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
       DiffusionMaterial::entry(),

@@ -45,13 +45,15 @@ std::string number(double v) {
   return s.str();
 }
 
-double bondInfluence(const FamilyView& fam, int b) { return fam.unitInfluence ? 1.0 : fam.influence[b]; }
 double bondFraction(const FamilyView& fam, int b) { return fam.fraction ? fam.fraction[b] : 1.0; }
 
 }  // namespace
 
 MicroelasticMaterial::MicroelasticMaterial(const MaterialInput& in)
-    : dim_(dimensionFrom(in, &thickness_)), density_(in.get("Density")) {
+    : MicroelasticMaterial(in, Calibration{"Thickness", false, true}) {}
+
+MicroelasticMaterial::MicroelasticMaterial(const MaterialInput& in, const Calibration& cal)
+    : dim_(dimensionFrom(in, &thickness_, cal.thicknessName)), density_(in.get("Density")), influence_(cal.influence) {
   const std::string where = in.inputFile + ": material '" + in.name + "'";
   const bool K = in.has("Bulk Modulus"), E = in.has("Young's Modulus");
   if (K == E)
@@ -59,6 +61,10 @@ MicroelasticMaterial::MicroelasticMaterial(const MaterialInput& in)
                              "one elastic constant)");
   const double nu = poissonRatio();
   bulk_ = K ? in.get("Bulk Modulus") : in.get("Young's Modulus") / (3.0 * (1.0 - 2.0 * nu));
+  // Peridigm's Elastic Bond Based (elastic_bond_based.cxx) takes c = 12K/(pi h delta^3) in plane stress and
+  // plane strain alike: with Q = h 2 pi delta^3 / 3, 4 W1 = 8K, i.e. W = 2K eps^2, the energy of a 2D solid whose
+  // in-plane bulk modulus is the K given (not the plane-stress 3K/4 or plane-strain 6K/5 of nu's 3D solid).
+  fourW1_ = cal.peridigmPlanar && dim_ != Dimension::ThreeD ? 8.0 * bulk_ : fourW1(dim_, bulk_);
   // A bond-based solid's Poisson's ratio is fixed; a deck may state it, but only as that value (to 1e-3,
   // so that 0.333 passes for 1/3).
   if (in.has("Poisson's Ratio") && std::fabs(in.get("Poisson's Ratio") - nu) > 1e-3)
@@ -110,15 +116,15 @@ void MicroelasticMaterial::enableOutput(const std::string& name) const {
 }
 
 double MicroelasticMaterial::micromodulus(const FamilyView& fam, int i) const {
-  const double c = fourW1(dim_, bulk_) / continuumMoment(dim_, fam.horizon, thickness_);
-  if (fam.unitInfluence) return c;
+  const double c = fourW1_ / continuumMoment(dim_, fam.horizon, thickness_);
+  if (fam.unitInfluence || !influence_) return c;
   // The continuum c is calibrated for omega = 1. With an influence function the pair force is omega c s,
   // so c is divided by the family's mean omega (weighted by |xi| V_j, as Q weights the bonds): the bulk
   // modulus stays K. For omega = 1 both sums are the same bits and the ratio is exactly 1.
   double weighted = 0.0, plain = 0.0;
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
     const double xv = fam.refLength[b] * fam.volume[fam.neighbors[b]] * bondFraction(fam, b);
-    weighted += bondInfluence(fam, b) * xv;
+    weighted += omega(fam, b) * xv;
     plain += xv;
   }
   return weighted > 0.0 ? c * plain / weighted : c;
@@ -153,14 +159,14 @@ void MicroelasticMaterial::forces(const FamilyView& fam, const double* y, StateS
         broken += 1.0;
         continue;
       }
-      const double omega = bondInfluence(fam, b), fr = bondFraction(fam, b);
-      const double s = (mech - xi) / xi, g = 0.5 * c * omega * s / len;
+      const double om = omega(fam, b), fr = bondFraction(fam, b);
+      const double s = (mech - xi) / xi, g = 0.5 * c * om * s / len;
       const double vj = fam.volume[j] * fr, vi = Vi * fr;
       for (int a = 0; a < 3; ++a) {
         fi[a] += g * d[a] * vj;
         force[3 * j + a] -= g * d[a] * vi;
       }
-      w += omega * s * s * xi * vj;
+      w += om * s * s * xi * vj;
     }
     for (int a = 0; a < 3; ++a) force[3 * i + a] += fi[a];
     if (energy) energy[i] = 0.25 * c * w * Vi;
@@ -195,7 +201,7 @@ void MicroelasticMaterial::derivative(const FamilyView& fam, const double* y, co
       const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]), xi = fam.refLength[b];
       const double M[3] = {d[0] / len, d[1] / len, d[2] / len};
       const double de = M[0] * dd[0] + M[1] * dd[1] + M[2] * dd[2];
-      const double half = 0.5 * c * bondInfluence(fam, b) / xi, fr = bondFraction(fam, b);
+      const double half = 0.5 * c * omega(fam, b) / xi, fr = bondFraction(fam, b);
       const double T = half * ((Thermal ? len - strain * xi : len) - xi), dTde = half * de;
       for (int a = 0; a < 3; ++a) {
         const double dTM = dTde * M[a] + T * (dd[a] - M[a] * de) / len;
@@ -211,7 +217,7 @@ void MicroelasticMaterial::pairStiffness(const FamilyView& fam, double* stiffnes
   for (int i = fam.begin; i < fam.end; ++i) {
     const double c = micromodulus(fam, i);
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b)
-      stiffness[b] = 0.5 * c * bondInfluence(fam, b) * bondFraction(fam, b) / fam.refLength[b];
+      stiffness[b] = 0.5 * c * omega(fam, b) * bondFraction(fam, b) / fam.refLength[b];
   }
 }
 
@@ -232,7 +238,7 @@ void MicroelasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) 
         n1 += n;
         nmax = std::max(nmax, n);
       }
-      sum += c * bondInfluence(fam, b) * bondFraction(fam, b) * fam.volume[j] / x * nmax * n1;
+      sum += c * omega(fam, b) * bondFraction(fam, b) * fam.volume[j] / x * nmax * n1;
     }
     bound[i] = 2.0 * sum;
   }

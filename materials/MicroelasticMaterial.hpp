@@ -37,7 +37,18 @@ class MicroelasticMaterial : public Material {
   // mean influence (1 for omega = 1).
   double micromodulus(const FamilyView& fam, int i) const;
 
+ protected:
+  // What Peridigm's Elastic Bond Based (ElasticBondBasedMaterial.hpp) does otherwise; the same kernels.
+  struct Calibration {
+    const char* thicknessName;  // the planar thickness parameter: "Thickness" / Peridigm's "Height"
+    bool peridigmPlanar;        // 2D: 4 W1 = 8K (Peridigm's c = 12K/(pi h delta^3)) instead of the energy match
+    bool influence;             // omega from the discretization's Influence Function (false: omega = 1)
+  };
+  MicroelasticMaterial(const MaterialInput& in, const Calibration& cal);
+
  private:
+  double omega(const FamilyView& fam, int b) const { return influence_ && !fam.unitInfluence ? fam.influence[b] : 1.0; }
+
   // The loops, mechanics-only (Thermal false: the code as before) or with the thermal stretch.
   template <bool Thermal>
   void forces(const FamilyView& fam, const double* y, StateStore& state, double* force) const;
@@ -47,6 +58,8 @@ class MicroelasticMaterial : public Material {
   double thickness_;  // before dim_: dimensionFrom (dim_'s initialiser) writes it
   Dimension dim_;
   double density_, bulk_;
+  double fourW1_;          // 4 W1 of micromodulus() (see the .cpp)
+  bool influence_ = true;  // Calibration::influence
   double thermal_ = 0.0;  // a of the free thermal stretch a dT (see the .cpp); 0: no thermal expansion
   mutable bool energyWanted_ = false;  // set by enableOutput("Stored_Elastic_Energy") before the run
 };

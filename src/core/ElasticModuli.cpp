@@ -43,17 +43,18 @@ ElasticModuli elasticModuliFrom(const MaterialInput& in) {
   return m;
 }
 
-Dimension dimensionFrom(const MaterialInput& in, double* thickness) {
+Dimension dimensionFrom(const MaterialInput& in, double* thickness, const char* thicknessName) {
+  const std::string h = thicknessName;
   const bool ps = in.flag("Plane Stress"), pe = in.flag("Plane Strain");
   const std::string where = in.inputFile + ": material '" + in.name + "'";
   if (ps && pe) throw InputError(where + ": 'Plane Stress' and 'Plane Strain' are both true");
   if (!ps && !pe) {
-    if (in.has("Thickness")) throw InputError(where + ": 'Thickness' is only for Plane Stress / Plane Strain");
+    if (in.has(h)) throw InputError(where + ": '" + h + "' is only for Plane Stress / Plane Strain");
     *thickness = 0.0;
     return Dimension::ThreeD;
   }
-  if (!in.has("Thickness")) throw InputError(where + ": 'Thickness' is needed by Plane Stress / Plane Strain");
-  *thickness = in.get("Thickness");  // > 0: its spec's range
+  if (!in.has(h)) throw InputError(where + ": '" + h + "' is needed by Plane Stress / Plane Strain");
+  *thickness = in.get(h);  // > 0: its spec's range
   return ps ? Dimension::PlaneStress : Dimension::PlaneStrain;
 }
 

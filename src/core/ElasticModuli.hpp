@@ -16,8 +16,9 @@ struct ElasticModuli {
 // positive bulk and shear modulus (each one's own range is its ParameterSpec's, checked by the input).
 ElasticModuli elasticModuliFrom(const MaterialInput& in);
 
-// Dimension from the "Plane Stress"/"Plane Strain" flags (not both); Thickness required when planar and
-// refused in 3D (its range, > 0, is its spec's).
-Dimension dimensionFrom(const MaterialInput& in, double* thickness);
+// Dimension from the "Plane Stress"/"Plane Strain" flags (not both); the thickness (parameter `thicknessName`:
+// "Thickness", or "Height" for Peridigm's Elastic Bond Based) required when planar and refused in 3D (its
+// range, > 0, is its spec's).
+Dimension dimensionFrom(const MaterialInput& in, double* thickness, const char* thicknessName = "Thickness");
 
 }  // namespace pf

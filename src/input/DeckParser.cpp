@@ -9,6 +9,7 @@
 
 #include "Input.hpp"
 #include "Sections.hpp"
+#include "core/Log.hpp"
 #include "core/SolverEntry.hpp"
 
 namespace pf {
@@ -66,17 +67,26 @@ std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<st
   std::vector<OutputSpec> out;
   std::set<std::string> labels;
   for (const ComputeSpec& c : deck.computes) labels.insert(c.label);
-  std::map<std::string, std::string> files;  // Output Filename -> list
+  std::map<std::string, std::size_t> files;  // Output Filename -> its list in out
   for (const std::string& n : outputLists(p)) {
-    out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels));
-    const std::string& f = out.back().filename;
-    if (files.count(f)) fail(deck.file, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");
-    files[f] = n;
+    OutputSpec o = parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels);
+    const auto it = files.find(o.filename);
+    if (it == files.end()) {
+      files[o.filename] = out.size();
+      out.push_back(std::move(o));
+      continue;
+    }
+    // Peridigm's suite decks give a second list of the same file (the first's globals again, or other globals at
+    // another frequency); Peridigm's gold file is then the first list's alone (ElasticBondBased*,
+    // ElasticPlasticCorrespondenceFullyPrescribedTension, ...). So the later list is dropped, with a warning.
+    warn(deck.file + ": " + n + ": 'Output Filename' = '" + o.filename + "' is also the file of '" +
+         out[it->second].listName + "': the file is '" + out[it->second].listName + "''s alone (as Peridigm's); '" +
+         n + "' writes nothing");
   }
   return out;
 }
 
-// A 2D material's Thickness enters its constants, the discretization's the points' volumes: two different
+// A 2D material's Thickness (Height) enters its constants, the discretization's the points' volumes: two different
 // values would give a model that is neither (the forces follow the volumes). A Text File mesh holds its
 // thickness in its volumes only, and is not checked.
 void requireOneThickness(const Deck& deck) {
@@ -84,10 +94,11 @@ void requireOneThickness(const Deck& deck) {
   if (!(h > 0.0)) return;
   for (const BlockGroupSpec& b : deck.blocks) {
     const MaterialSpec& m = deck.material(b.material);
-    if (!m.values.has("Thickness")) continue;
-    const double hm = m.values.get("Thickness");
+    const std::string name = m.values.has("Height") ? "Height" : "Thickness";  // Elastic Bond Based's: Height
+    if (!m.values.has(name)) continue;
+    const double hm = m.values.get(name);
     if (std::fabs(hm - h) > 1e-12 * h)
-      fail(deck.file, "Materials/" + m.name, "'Thickness' = " + numberText(hm) + " differs from the Discretization's " +
+      fail(deck.file, "Materials/" + m.name, "'" + name + "' = " + numberText(hm) + " differs from the Discretization's " +
                                                  numberText(h) + " (the points' volumes): give both the same value");
   }
 }

@@ -147,11 +147,13 @@ void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, 
     }
 }
 
-// A Text File mesh is 3D unless it is flat (every z = 0) and every block's material is 2D: then it is the
-// 2D discretization those materials need (the volumes in the file already hold the thickness).
-void adoptFlatTextMesh(const DiscretizationSpec& spec, PointCloud& cloud, const std::map<int, BlockSpec>& blocks,
-                       const Communicator& comm) {
-  if (spec.type != DiscretizationSpec::Type::TextFile || cloud.planar) return;
+// A Text File mesh, or an Exodus mesh of 3D elements, is 3D unless it is flat (every point at z = 0: for Exodus,
+// one layer of elements centred on z = 0, as Peridigm's 2D decks mesh a plate) and every block's material is 2D:
+// then it is the 2D discretization those materials need (the volumes already hold the thickness).
+void adoptFlatMesh(const DiscretizationSpec& spec, PointCloud& cloud, const std::map<int, BlockSpec>& blocks,
+                   const Communicator& comm) {
+  const bool file = spec.type == DiscretizationSpec::Type::TextFile || spec.type == DiscretizationSpec::Type::Exodus;
+  if (!file || cloud.planar) return;
   double raised = 0.0;
   for (int p = 0; p < cloud.size(); ++p)
     if (cloud.x[3 * p + 2] != 0.0) raised = 1.0;
@@ -249,7 +251,7 @@ void requireBlocksAndDimension(const Deck& deck, PointCloud& slab, const std::ma
         throw InputError(inputFile + ": Blocks: the discretization has points in block_" + std::to_string(slab.block[p]) +
                          " but no entry of Blocks names it");
   });
-  adoptFlatTextMesh(deck.discretization, slab, blocks, comm);
+  adoptFlatMesh(deck.discretization, slab, blocks, comm);
   for (const auto& kv : blocks) {
     const bool planarMaterial = isPlanar(kv.second.material->dimension());
     if (planarMaterial && !slab.planar)

@@ -72,13 +72,12 @@ struct ForceTimer {
   }
 };
 
-// The acceleration the next half step uses: zero on prescribed components, (f + f_terms + b) / rho elsewhere
-// (f_terms: the model's force terms, contact; empty without them).
+// The acceleration the next half step uses, (f + f_terms + b) / rho (f_terms: the model's force terms, contact;
+// empty without them), prescribed components too (their conditions then replace u and v; see the step loop).
 void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& terms,
                   const std::vector<double>& b, std::vector<double>& a) {
-  const std::vector<char>& fixed = model.prescribedMask();
   for (std::size_t k = 0; k < a.size(); ++k)
-    a[k] = fixed[k] ? 0.0 : (f[k] + (terms.empty() ? 0.0 : terms[k]) + b[k]) / model.density()[k / 3];
+    a[k] = (f[k] + (terms.empty() ? 0.0 : terms[k]) + b[k]) / model.density()[k / 3];
 }
 
 // The model's force terms (contact) for the integrator: their sum ft at the step's positions and half-step
@@ -241,6 +240,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     auto start = Clock::now();
     const double t = (s == steps && opt_.fixedDt <= 0) ? t1 : t0 + s * dt;
     uPrev = u;
+    const double rate = 1.0 / (t - (t0 + (s - 1) * dt));  // Peridigm's DirichletIncrementBC: change / (t - t_prev)
     for (int k = 0; k < n; ++k) {
       v[k] += 0.5 * dt * a[k];
       u[k] += dt * v[k];
@@ -248,14 +248,16 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     if (!model.rigidWalls().empty()) model.enforceRigidWalls(dt, u.data(), v.data(), a.data());
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
-      if (fixed[k]) v[k] = (u[k] - uPrev[k]) / dt;
+      if (fixed[k]) v[k] = (u[k] - uPrev[k]) * rate;
     forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, u, f); });
     if (terms.on()) terms.atStep(model, s, t, dt, uPrev, v);
     if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
+    // Prescribed components too get the second half kick, as Peridigm's executeExplicit (its condition sets only the
+    // half-step velocity); the next step's condition replaces u and v there: only the written velocity differs.
     for (int k = 0; k < n; ++k) {
-      a[k] = fixed[k] || !mechanics ? 0.0 : (f[k] + terms[k] + b[k]) / rho[k / 3];
-      if (!fixed[k]) v[k] += 0.5 * dt * a[k];
+      a[k] = mechanics ? (f[k] + terms[k] + b[k]) / rho[k / 3] : 0.0;
+      v[k] += 0.5 * dt * a[k];
       probe += u[k] + v[k] + f[k] + terms[k];
     }
     requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);

@@ -92,6 +92,14 @@ endforeach()
 # runs every case and prints the table; a case joins this list when it passes there at both np.
 # Each entry: case folder, deck, output name (its gold is <output>_gold.e), .comp file.
 set(PERIDIGM_SUITE ${PERIFORGE_SHARED_DIR}/reference/peridigm-suite)
+# The fields of one entry: case folder, deck, output name, .comp file.
+macro(peridigm_case_fields entry)
+  separate_arguments(e UNIX_COMMAND "${entry}")
+  list(GET e 0 case)
+  list(GET e 1 deck)
+  list(GET e 2 out)
+  list(GET e 3 comp)
+endmacro()
 set(peridigm_suite_cases
   "Bar_OneBlock_OneMaterial_QS Bar.xml Bar Bar.comp"
   "Bar_TwoBlocks_OneMaterial_QS Bar.xml Bar Bar.comp"
@@ -120,13 +128,15 @@ set(peridigm_suite_cases
   "InitialDamage InitialDamage.xml InitialDamage InitialDamage.comp"
   "BondBreakingInitialVelocity_TimeDependentCS BondBreakingInitialVelocity.xml BondBreakingInitialVelocity BondBreakingInitialVelocity.comp"
   "DeformationGradient__NoDeformation DeformationGradient_NoDeformation.xml DeformationGradient_NoDeformation DeformationGradient.comp"
-  "DeformationGradient__NoLoad DeformationGradient_NoLoad.xml DeformationGradient_NoLoad DeformationGradient.comp")
+  "DeformationGradient__NoLoad DeformationGradient_NoLoad.xml DeformationGradient_NoLoad DeformationGradient.comp"
+  "Body_Force__Explicit Body_Force_Explicit.xml Body_Force_Explicit Body_Force.comp"
+  "Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.xml Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.comp"
+  "ThermalExpansionBondFailure ThermalExpansionBondFailure.xml ThermalExpansionBondFailure ThermalExpansionBondFailure.comp"
+  "ElasticBondBased__ElasticBondBased3D ElasticBondBased3D.yaml ElasticBondBased3D ElasticBondBased.comp"
+  "ElasticBondBased__ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.yaml ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.comp"
+  "ElasticBondBased__ElasticBondBased2DPlaneStress ElasticBondBased2DPlaneStress.yaml ElasticBondBased2DPlaneStress ElasticBondBased2DPlaneStress.comp")
 foreach(entry ${peridigm_suite_cases})
-  separate_arguments(e UNIX_COMMAND "${entry}")
-  list(GET e 0 case)
-  list(GET e 1 deck)
-  list(GET e 2 out)
-  list(GET e 3 comp)
+  peridigm_case_fields("${entry}")
   foreach(np 1 2)
     periforge_run(peridigm_suite_${case}_np${np} ${PERIDIGM_SUITE}/${case}/${deck} ${np})
     periforge_check(peridigm_suite_${case}_np${np}_vs_gold peridigm_suite_${case}_np${np}
@@ -159,4 +169,26 @@ foreach(np 1 2)
   periforge_check(peridigm_suite_${case}_np${np}_tensors_vs_gold peridigm_suite_${case}_np${np}
     ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_suite_${case}_np${np}/${case}.e
     ${PERIDIGM_SUITE}/${case}/${case}_gold.e ${REG}/compat/correspondence_tensors_thermal.comp)
+endforeach()
+
+# Peridigm's J2 correspondence models against Peridigm's gold with the outputs Periforge writes: these decks still
+# stop on Peridigm's tensor outputs (Deformation_Gradient, Cauchy_Stress, ... as whole tensors, Hourglass_Force_Density),
+# so test/regression/peridigm_models/reduced_vs_gold.py drops those lines from a copy of the deck and of the .comp
+# and compares everything else (Displacement, Velocity, Force, Von_Mises_Stress, Equivalent_Plastic_Strain).
+set(peridigm_reduced_cases
+  "ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.xml ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.comp"
+  "IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.comp"
+  "IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.comp")
+foreach(entry ${peridigm_reduced_cases})
+  peridigm_case_fields("${entry}")
+  foreach(np 1 2)
+    set(name peridigm_reduced_${case}_np${np}_vs_gold)
+    set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
+    file(MAKE_DIRECTORY ${wd})
+    periforge_shared_guard(guard ${PERIDIGM_SUITE}/${case}/${deck})
+    add_test(NAME ${name} COMMAND ${guard} ${PY} ${REG}/peridigm_models/reduced_vs_gold.py ${PERIDIGM_SUITE}/${case}
+      ${deck} ${out} ${comp} ${np} ${PERIFORGE_EXE} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${MPIRUN} WORKING_DIRECTORY ${wd})
+    set_tests_properties(${name} PROPERTIES LABELS "regression" PROCESSORS ${np})
+    periforge_mark_shared(${name} "${guard}")
+  endforeach()
 endforeach()

@@ -389,3 +389,21 @@ TEST(RegressionDecks, Validate) {
   }
   if (count == 0) GTEST_SKIP() << "no regression decks";
 }
+
+// Two output lists of one file: Peridigm's gold file is the first list's alone (its suite decks' second lists add
+// globals, at the same or another frequency), so a later list of the same file is dropped.
+TEST(InputSchema, OutputListsSharingAFile) {
+  auto list = [](Teuchos::ParameterList& o, const std::vector<std::string>& vars) {
+    o.set("Output Filename", std::string("shared"));
+    for (const std::string& v : vars) o.sublist("Output Variables").set(v, true);
+  };
+  auto p = base();
+  list(p->sublist("Output1"), {"Displacement"});
+  list(p->sublist("Output2"), {"Force"});
+  p->sublist("Output2").set("Output Frequency", 2);
+  const pf::Deck d = pf::parseDeck(*p, kFile);
+  ASSERT_EQ(d.outputs.size(), 2u);  // Output and Output1; Output2 dropped
+  EXPECT_EQ(d.outputs[1].listName, "Output1");
+  EXPECT_EQ(d.outputs[1].variables, std::vector<std::string>{"Displacement"});
+  EXPECT_EQ(d.outputs[1].frequency, 1);
+}

@@ -43,7 +43,7 @@ void setValue(Teuchos::ParameterList& l, const pf::ParameterSpec& s, double v) {
 
 // The required parameters of the entry at a value inside their range, plus the first of a few sets of
 // elastic constants the model accepts (the models need one or two of them: a cross-parameter rule no
-// spec can state). planar: Plane Stress with a Thickness. Empty list if none is accepted.
+// spec can state). planar: Plane Stress with a Thickness (Height). Empty list if none is accepted.
 Teuchos::ParameterList minimalList(const pf::MaterialEntry& e, bool planar) {
   const std::vector<std::vector<std::pair<std::string, double>>> constants = {
       {}, {{"Young's Modulus", 200e9}}, {{"Young's Modulus", 200e9}, {"Poisson's Ratio", 0.3}}};
@@ -59,7 +59,9 @@ Teuchos::ParameterList minimalList(const pf::MaterialEntry& e, bool planar) {
     for (const auto& kv : extra) l.set(kv.first, kv.second);
     if (planar) {
       l.set("Plane Stress", true);
-      l.set("Thickness", 1e-3);
+      bool height = false;  // Elastic Bond Based's thickness is Peridigm's "Height"
+      for (const pf::ParameterSpec& s : e.parameters) height = height || s.name == "Height";
+      l.set(height ? "Height" : "Thickness", 1e-3);
     }
     try {
       e.create(pf::materialInputFor(l, "M", kFile));

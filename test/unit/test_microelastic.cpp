@@ -15,6 +15,7 @@
 #include <random>
 #include <vector>
 
+#include "BondBasedValues.hpp"
 #include "LatticeFixture.hpp"
 #include "test_input_helpers.hpp"
 #include "core/InputError.hpp"
@@ -27,13 +28,7 @@ using pf::Dimension;
 constexpr double kK = 100e9, kDx = 1e-3, kH = 2e-3, kPi = 3.14159265358979323846;
 const Dimension kDims[3] = {Dimension::ThreeD, Dimension::PlaneStress, Dimension::PlaneStrain};
 
-std::map<std::string, double> values(Dimension dim) {
-  std::map<std::string, double> v = {{"Density", 7800.0}, {"Bulk Modulus", kK}};
-  if (dim == Dimension::PlaneStress) v["Plane Stress"] = 1;
-  if (dim == Dimension::PlaneStrain) v["Plane Strain"] = 1;
-  if (dim != Dimension::ThreeD) v["Thickness"] = kH;
-  return v;
-}
+std::map<std::string, double> values(Dimension dim) { return pftest::bondBasedValues(dim, kK, kH); }
 
 std::unique_ptr<pf::Material> make(Dimension dim) { return pf::makeMaterial("Microelastic", values(dim)); }
 const pf::MicroelasticMaterial& micro(const pf::Material& m) { return dynamic_cast<const pf::MicroelasticMaterial&>(m); }
