@@ -116,6 +116,15 @@ double Model::adoptBreaks() {
 void Model::internalForce(const double* u, double* f) {
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
+  forceAtOverlapPositions(f);
+}
+
+void Model::internalForceAt(const double* y, double* f) {
+  layout_->importToOverlap(y, yOverlap_.data(), 3);  // a ghost gets its owner's position, bit for bit
+  forceAtOverlapPositions(f);
+}
+
+void Model::forceAtOverlapPositions(double* f) {
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
   updateFollowerLoads();
   imposeFields();

@@ -55,6 +55,9 @@ class Model {
   // Internal force density f (3 per owned node) for displacements u (3 per owned node). Computes the
   // materials' trial state. Throws ConstitutiveFailure on every rank if a material cannot update on any.
   void internalForce(const double* u, double* f);
+  // The same at given current positions y (3 per owned node) instead of x + u: for an integrator whose
+  // positions are rounded otherwise (Peridigm's Verlet forms y = (x + u_n) + dt v, not x + u_n+1).
+  void internalForceAt(const double* y, double* f);
   // df = (d f / d u) du at u, exactly, if every material has an exact tangent (returns false otherwise).
   bool forceDerivative(const double* u, const double* du, double* df);
   bool hasExactTangent() const;
@@ -208,6 +211,7 @@ class Model {
   void imposeFields();          // FieldSet::impose at time_, starting the fields first if needed
   int exchangeWidth_ = 0;                         // the widest Material::exchangeWidth of the blocks
   std::vector<double> exchange_, exchangeOwned_;  // per overlap node / owned node, exchangeWidth_ each
+  void forceAtOverlapPositions(double* f);  // internalForce's evaluation once yOverlap_ holds the positions
   // The second phase of internalForce at positions y (every two-phase block, or only those reading a field).
   void exchangeAndComplete(const double* y, bool onlyFieldReaders);
   static bool readsField(const BlockModel& b);    // its material reads a field (Material::fieldsRead)

@@ -9,6 +9,7 @@
 
 #include "ExplicitFieldStep.hpp"
 #include "FiniteCheck.hpp"
+#include "VerletPeridigm.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "model/Model.hpp"
@@ -29,12 +30,19 @@ SolverEntry VerletSolver::entry() {
                   S::flag("Allow Unstable Time Step",
                           "accept a `Fixed dt` or `Safety Factor` more than 2 × the stable step estimate (otherwise an "
                           "input error)")
-                      .byDefault("false")};
+                      .byDefault("false"),
+                  S::text("Prescribed Velocity",
+                          "the velocity a prescribed component carries (and is written with): Half Kick (Peridigm's: "
+                          "the step's rate Δu/dt plus dt/2 (f + b)/ρ, its second half kick applied to every "
+                          "component) or Step Rate (Δu/dt alone, the component's own motion: 0 for a held one)")
+                      .oneOf({"Half Kick", "Step Rate"})
+                      .byDefault("Half Kick")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     VerletOptions o;
     o.fixedDt = p.get("Fixed dt", 0.0);
     o.safetyFactor = p.get("Safety Factor");
     o.allowUnstable = p.flag("Allow Unstable Time Step");
+    o.prescribedHalfKick = p.text("Prescribed Velocity") == "Half Kick";
     o.where = p.where();
     return std::unique_ptr<Solver>(new VerletSolver(o));
   };
@@ -126,10 +134,10 @@ void VerletSolver::check(const Model& model) const {
 // The step's end state at t: the force at u (mechanics) or only the conditions of t, then the field advanced over
 // dt (0: the start, nothing to advance), then the commit.
 void VerletSolver::evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt,
-                            std::vector<double>& u, std::vector<double>& f) const {
+                            const std::vector<double>& y, std::vector<double>& f) const {
   const CheckPoint at{"Verlet", step, t};
   if (advances("Displacement"))
-    atStep(at, [&] { model.internalForce(u.data(), f.data()); });
+    atStep(at, [&] { model.internalForceAt(y.data(), f.data()); });
   else
     model.updateFields();
   if (heat && dt > 0.0) atStep(at, [&] { heat->advance(model, dt, advances("Displacement")); });
@@ -165,7 +173,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
 
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double>& rho = model.density();
-  std::vector<double> f(n), b(n), a(n), uPrev(n);
+  std::vector<double> f(n), b(n), a(n), uPrev(n), y(n);
   // f is all a later step needs of this one besides u, v and the committed state (a = (f + b) / rho).
   const SolverCarry carry{{{"Force_Density", &f}}, {{"dt", dt}, {"steps", static_cast<double>(steps)}}};
   if (resume) {
@@ -173,7 +181,8 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.bodyForce(resume->time, b.data());
   } else {
     model.applyPrescribed(t0, u.data());
-    evaluate(model, heat.get(), 0, t0, 0.0, u, f);
+    verletPositions(model, u, u, v, 0.0, y);
+    evaluate(model, heat.get(), 0, t0, 0.0, y, f);
     model.bodyForce(t0, b.data());
   }
   if (mechanics) acceleration(model, f, b, a);  // a thermal-only run leaves u and v alone
@@ -199,7 +208,8 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) / dt;
-    forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, u, f); });
+    verletPositions(model, uPrev, u, v, dt, y);
+    forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, y, f); });
     if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
     for (int k = 0; k < n; ++k) {
@@ -207,6 +217,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
       if (!fixed[k]) v[k] += 0.5 * dt * a[k];
       probe += u[k] + v[k] + f[k];
     }
+    if (opt_.prescribedHalfKick && mechanics) halfKickPrescribed(fixed, rho, f, b, dt, v);
     requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall, &carry}, u, v, f);

@@ -18,6 +18,7 @@ struct VerletOptions {
   double fixedDt = 0.0;       // > 0: use this dt
   double safetyFactor = 0.8;  // used when fixedDt == 0
   bool allowUnstable = false; // accept fixedDt > kRefuseFactor x the stable step
+  bool prescribedHalfKick = true;  // Peridigm's velocity of a prescribed component (VerletPeridigm.hpp)
   std::string where;          // the deck list, for input errors ("input.xml: Solver/Verlet")
 };
 
@@ -42,7 +43,7 @@ class VerletSolver : public Solver {
   double timeStep(const Model& model, const ExplicitFieldStep* heat) const;
   // The Temperature field's explicit step when the deck has Verlet advance it (the field then marked solved), or null.
   std::unique_ptr<ExplicitFieldStep> heatStep(Model& model) const;
-  void evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt, std::vector<double>& u,
+  void evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt, const std::vector<double>& y,
                 std::vector<double>& f) const;
   VerletOptions opt_;
 };

@@ -98,7 +98,16 @@ set(peridigm_suite_cases
   "MultipleHorizons MultipleHorizons.xml MultipleHorizons MultipleHorizons.comp"
   "Body_Force__QS_NOX Body_Force_QS_NOX.xml Body_Force_QS_NOX Body_Force.comp"
   "ThermalExpansionCube ThermalExpansionCube.xml ThermalExpansionCube ThermalExpansionCube.comp"
-  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp")
+  "SimpleImplicitDiffusion SimpleImplicitDiffusion.xml SimpleImplicitDiffusion SimpleImplicitDiffusion.comp"
+  "Body_Force__Explicit Body_Force_Explicit.xml Body_Force_Explicit Body_Force.comp"
+  "Body_Force__Implicit Body_Force_Implicit.xml Body_Force_Implicit Body_Force.comp"
+  "CompressionImplicitEssentialBC_2x1x1 CompressionImplicitEssentialBC_2x1x1.xml CompressionImplicitEssentialBC_2x1x1 CompressionImplicitEssentialBC_2x1x1.comp"
+  "Compression_2x1x1 Compression_2x1x1.yaml Compression_2x1x1 Compression_2x1x1.comp"
+  "Compression_3x1x1_InfluenceFunction Compression_3x1x1_InfluenceFunction.xml Compression_3x1x1_InfluenceFunction Compression_3x1x1_InfluenceFunction.comp"
+  "Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.xml Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.comp"
+  "MultipleOutputFiles MultipleOutputFiles.xml MultipleOutputFiles1 MultipleOutputFiles1.comp"
+  "NodalVariableOutput NodalVariableOutput.xml NodalVariableOutput NodalVariableOutput.comp"
+  "ThermalExpansionBondFailure ThermalExpansionBondFailure.xml ThermalExpansionBondFailure ThermalExpansionBondFailure.comp")
 foreach(entry ${peridigm_suite_cases})
   separate_arguments(e UNIX_COMMAND "${entry}")
   list(GET e 0 case)
