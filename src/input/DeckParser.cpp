@@ -19,7 +19,7 @@ std::vector<std::string> topLists(const PL& p, const std::string& file) {
   std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart",
                                     "Damage Models", "Compute Class Parameters"};
   for (const std::string stem : {"Solver", "Output"}) {
-    const std::vector<std::string> lists = numberedLists(p, stem);
+    const std::vector<std::string> lists = stem == "Output" ? outputLists(p) : numberedLists(p, stem);
     tops.insert(tops.end(), lists.begin(), lists.end());
     if (!p.isSublist(stem)) tops.push_back(stem);  // so that a missing one is reported as such
   }
@@ -50,7 +50,7 @@ std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<st
   std::set<std::string> labels;
   for (const ComputeSpec& c : deck.computes) labels.insert(c.label);
   std::map<std::string, std::string> files;  // Output Filename -> list
-  for (const std::string& n : numberedLists(p, "Output")) {
+  for (const std::string& n : outputLists(p)) {
     out.push_back(parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels));
     const std::string& f = out.back().filename;
     if (files.count(f)) fail(deck.file, n, "'Output Filename' = '" + f + "' is also the file of '" + files[f] + "'");

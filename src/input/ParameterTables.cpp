@@ -45,7 +45,7 @@ std::vector<ParameterTable> parameterTables() {
       {"condition", "Boundary Conditions/<name> (a condition)", conditionSpecs()},
       {"rigid-wall", "Boundary Conditions/<name> with Type = Rigid Wall", rigidWallSpecs()},
       {"solver", "Solver (or Solver1, Solver2, ...)", solverListSpecs()},
-      {"output", "Output (or Output1, Output2, ...)", outputSpecs()},
+      {"output", "Output (or Output1, Output2, ..., or any list whose name contains Output)", outputSpecs()},
       {"probe", "Output/Probes/<any name>", probeSpecs()},
       {"restart", "Restart", restartSpecs()},
       {"compute", "Compute Class Parameters/<any name>", computeSpecs()}};

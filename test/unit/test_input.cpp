@@ -249,6 +249,25 @@ TEST(InputSchema, OutputErrors) {
   EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "'Reactions' names undefined node set 'Nowhere'");
 }
 
+// Peridigm takes every top-level list whose name contains "Output" as an output list (Peridigm.cpp,
+// initializeOutputManager): "Output Data" (its VariableHorizonParsing and contact decks) is one.
+TEST(InputSchema, OutputListsAreThoseWhoseNameContainsOutput) {
+  auto p = base();
+  Teuchos::ParameterList data = p->sublist("Output");
+  data.set("Output Filename", std::string("data"));
+  p->set("Output Data", data);
+  p->set("Output2", data);
+  p->sublist("Output2").set("Output Filename", std::string("second"));
+  const pf::Deck deck = pf::parseDeck(*p, kFile);
+  ASSERT_EQ(deck.outputs.size(), 3u);  // Output, the numbered Output2, then the others in the deck's order
+  EXPECT_EQ(deck.outputs[0].filename, "out");
+  EXPECT_EQ(deck.outputs[1].filename, "second");
+  EXPECT_EQ(deck.outputs[2].filename, "data");
+  auto q = base();
+  q->set("Output01", data);
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "'Output01': a numbered Output list");
+}
+
 TEST(Input, ReadsXmlAndYamlAndNamesBadFiles) {
   const std::string xml = pftest::writeTemp("pf_deck.xml", baseDeck());
   auto p = pf::readInput(xml);
