@@ -43,6 +43,18 @@ foreach(np 1 2)
     ${PY} ${REG}/compat/check_compat_line.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_line_np${np}/compat_line.e)
 endforeach()
 
+# Verlet's Prescribed Velocity: Half Kick (Peridigm's default) against Step Rate on one deck, both moving alike.
+foreach(np 1 2)
+  foreach(v compat_prescribed_velocity compat_prescribed_velocity_rate)
+    periforge_run(peridigm_${v}_np${np} ${REG}/compat/${v}.xml ${np})
+  endforeach()
+  periforge_check(peridigm_compat_prescribed_velocity_np${np}_check
+    "peridigm_compat_prescribed_velocity_np${np};peridigm_compat_prescribed_velocity_rate_np${np}"
+    ${PY} ${REG}/compat/check_compat_prescribed_velocity.py
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_prescribed_velocity_np${np}/compat_prescribed_velocity.e
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_prescribed_velocity_rate_np${np}/compat_prescribed_velocity_rate.e)
+endforeach()
+
 # Peridigm's Stored_Elastic_Energy against an independent bond sum and the closed form 9/2 kappa eps^2 V of an
 # isotropic stretch, on load times given as QuasiStatic "Time Steps"; numbered Solver1/Solver2 and
 # Output1/Output2 lists (Initial/Final Output Step, Global_Kinetic_Energy) against one equivalent solver.
