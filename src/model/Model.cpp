@@ -259,8 +259,9 @@ bool Model::forceDerivative(const double* u, const double* du, double* df) {
   return true;
 }
 
-void Model::addPrescribedDisplacement(NodalLoad load) {
+void Model::addPrescribedDisplacement(NodalLoad load, bool atInitialTime) {
   for (int i : load.nodes) prescribed_[3 * i + load.coordinate] = 1;
+  prescribedAtStart_.push_back(atInitialTime ? 1 : 0);
   prescribedLoads_.push_back(std::move(load));
 }
 
@@ -297,10 +298,11 @@ void Model::enforceRigidWalls(double dt, double* u, double* v, const double* a) 
   pf::enforceRigidWalls(walls_, x_, mass_, dt, u, v, wallReaction_, a, loss);
 }
 
-void Model::applyPrescribed(double t, double* u) const {
+void Model::applyPrescribed(double t, double* u, bool initialState) const {
   if (!clockStarted_) startTime_ = t, clockStarted_ = true;
   time_ = t;
-  for (const NodalLoad& l : prescribedLoads_) evaluate(l, x_, t, [u](int k, double v) { u[k] = v; });
+  for (std::size_t i = 0; i < prescribedLoads_.size(); ++i)
+    if (!initialState || prescribedAtStart_[i]) evaluate(prescribedLoads_[i], x_, t, [u](int k, double v) { u[k] = v; });
 }
 
 void Model::updateFollowerLoads() {

@@ -106,7 +106,8 @@ class Model {
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions
-  void addPrescribedDisplacement(NodalLoad load);
+  // atInitialTime false (Peridigm's): applyPrescribed(t, u, true), a solver's initial state, leaves it alone.
+  void addPrescribedDisplacement(NodalLoad load, bool atInitialTime = true);
   void addBodyForce(NodalLoad load);
   // One component of a follower Pressure (model/PressureLoad.hpp): value times factor at time t is that node's
   // reference traction over the layer thickness, which the NDO band turns with F (FamilyView::followerLoad). Part
@@ -116,7 +117,9 @@ class Model {
   // (FamilyView::time; the first t of the run is FamilyView::startTime). Every solver imposes the boundary
   // conditions of the time it evaluates, sub-steps included, so rate-dependent materials get the time
   // without any solver knowing about them.
-  void applyPrescribed(double t, double* u) const;
+  // initialState: the solver's start (not a resumed one), where only the conditions with atInitialTime are set:
+  // Peridigm applies a prescribed displacement as increments from the first step on (docs/input.md).
+  void applyPrescribed(double t, double* u, bool initialState = false) const;
   void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
@@ -222,6 +225,7 @@ class Model {
   double followerTime_ = NAN;
   void updateFollowerLoads();
   std::vector<char> prescribed_;
+  std::vector<char> prescribedAtStart_;  // per prescribedLoads_ entry: also applied in the initial state
   std::vector<RigidWall> walls_;
   std::vector<double> wallReaction_, mass_;
   // The clock applyPrescribed sets (mutable: imposing a time's conditions is what advances it).

@@ -169,7 +169,7 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
   if (resume) {
     a = resume->vector("Acceleration");
   } else {
-    model.applyPrescribed(t0, u.data());
+    model.applyPrescribed(t0, u.data(), true);
     atStep(CheckPoint{"Implicit", 0, t0}, [&] { model.internalForce(u.data(), f.data()); });
     model.commit();
     model.bodyForce(t0, b.data());

@@ -180,7 +180,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     f = resume->vector("Force_Density");
     model.bodyForce(resume->time, b.data());
   } else {
-    model.applyPrescribed(t0, u.data());
+    model.applyPrescribed(t0, u.data(), true);
     verletPositions(model, u, u, v, 0.0, y);
     evaluate(model, heat.get(), 0, t0, 0.0, y, f);
     model.bodyForce(t0, b.data());

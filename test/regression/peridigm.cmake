@@ -55,6 +55,14 @@ foreach(np 1 2)
     ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_prescribed_velocity_rate_np${np}/compat_prescribed_velocity_rate.e)
 endforeach()
 
+# A Prescribed Displacement's Apply At Initial Time: false (Peridigm's) from the first step on, true from the start.
+foreach(np 1 2)
+  periforge_run(peridigm_compat_initial_prescribed_np${np} ${REG}/compat/compat_initial_prescribed.xml ${np})
+  periforge_check(peridigm_compat_initial_prescribed_np${np}_check peridigm_compat_initial_prescribed_np${np}
+    ${PY} ${REG}/compat/check_compat_initial_prescribed.py
+    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_initial_prescribed_np${np}/compat_initial_prescribed.e)
+endforeach()
+
 # Peridigm's Stored_Elastic_Energy against an independent bond sum and the closed form 9/2 kappa eps^2 V of an
 # isotropic stretch, on load times given as QuasiStatic "Time Steps"; numbered Solver1/Solver2 and
 # Output1/Output2 lists (Initial/Final Output Step, Global_Kinetic_Energy) against one equivalent solver.
