@@ -43,21 +43,19 @@ foreach(np 1 2)
     ${PY} ${REG}/compat/check_compat_line.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_line_np${np}/compat_line.e)
 endforeach()
 
-# Verlet's Prescribed Velocity: Half Kick (Peridigm's default) against Step Rate on one deck, both moving alike.
+# Issue 39's switches on decks of our own, both settings of each: Verlet's Prescribed Velocity (Half Kick,
+# Peridigm's default, against Step Rate on one deck: the same motion, the prescribed components' velocities as
+# documented) and a Prescribed Displacement's Apply At Initial Time (false, Peridigm's: from the first step on;
+# true: from the start).
 foreach(np 1 2)
-  foreach(v compat_prescribed_velocity compat_prescribed_velocity_rate)
+  set(pv ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_prescribed_velocity)
+  foreach(v compat_prescribed_velocity compat_prescribed_velocity_rate compat_initial_prescribed)
     periforge_run(peridigm_${v}_np${np} ${REG}/compat/${v}.xml ${np})
   endforeach()
   periforge_check(peridigm_compat_prescribed_velocity_np${np}_check
     "peridigm_compat_prescribed_velocity_np${np};peridigm_compat_prescribed_velocity_rate_np${np}"
-    ${PY} ${REG}/compat/check_compat_prescribed_velocity.py
-    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_prescribed_velocity_np${np}/compat_prescribed_velocity.e
-    ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_prescribed_velocity_rate_np${np}/compat_prescribed_velocity_rate.e)
-endforeach()
-
-# A Prescribed Displacement's Apply At Initial Time: false (Peridigm's) from the first step on, true from the start.
-foreach(np 1 2)
-  periforge_run(peridigm_compat_initial_prescribed_np${np} ${REG}/compat/compat_initial_prescribed.xml ${np})
+    ${PY} ${REG}/compat/check_compat_prescribed_velocity.py ${pv}_np${np}/compat_prescribed_velocity.e
+    ${pv}_rate_np${np}/compat_prescribed_velocity_rate.e)
   periforge_check(peridigm_compat_initial_prescribed_np${np}_check peridigm_compat_initial_prescribed_np${np}
     ${PY} ${REG}/compat/check_compat_initial_prescribed.py
     ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_compat_initial_prescribed_np${np}/compat_initial_prescribed.e)
