@@ -90,6 +90,11 @@ std::vector<ParameterSpec> conditionSpecs() {
                               "(traction -p J F^-T N per reference area, as a fluid pressure); needs Blocks "
                               "`Surface Correction` = `NDO Band`. `false`: a dead load on the reference area (-p N)")
               .byDefault("false"),
+          S::flag("Apply At Initial Time",
+                  "`Prescribed Displacement` only: `false` (Peridigm's) leaves the initial state as it is (zero, or "
+                  "the `Initial Displacement`) and applies the value from the first step on, as Peridigm's "
+                  "increments do; `true` sets it at the initial time too")
+              .byDefault("false"),
           S::real("Heat Transfer Coefficient", "`Convection` only: h [W/(m^2 K)] of the heat flow h (T_amb - T) "
                                                "into the surface").positive(),
           S::scalar("Ambient Temperature", "`Convection` only: T_amb [K], an expression in `x`, `y`, `z`, `t`")};
@@ -159,6 +164,9 @@ std::vector<ConditionSpec> parseConditions(const PL& bcs, const std::set<std::st
     if (v.has("Layer Thickness") && !surface)
       fail(file, bpath, "'Layer Thickness' applies to a Pressure, Heat Flux or Convection only");
     if (v.flag("Follower") && c.kind != K::Pressure) fail(file, bpath, "'Follower' applies to a Pressure only");
+    if (b.isParameter("Apply At Initial Time") && c.kind != K::PrescribedDisplacement)
+      fail(file, bpath, "'Apply At Initial Time' applies to a Prescribed Displacement only");
+    c.atInitialTime = v.flag("Apply At Initial Time");
     for (const char* n : {"Heat Transfer Coefficient", "Ambient Temperature"}) {
       if (v.has(n) && !convection) fail(file, bpath, std::string("'") + n + "' applies to a Convection only");
       if (!v.has(n) && convection) fail(file, bpath, std::string("missing required parameter '") + n + "'");

@@ -116,6 +116,7 @@ struct ConditionSpec {
   double layerThickness = 0.0;        // Pressure, Heat Flux, Convection: the surface layer's thickness; 0 = the spacing
   double transferCoefficient = 0.0;   // Convection: h
   bool follower = false;              // Pressure: acts on the deformed surface (needs the NDO band)
+  bool atInitialTime = false;         // Prescribed Displacement: also set in the initial state (not Peridigm's)
 };
 
 // A frictionless rigid plane the points of a node set may not cross (Verlet only; model/RigidWall.hpp).

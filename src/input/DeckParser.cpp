@@ -35,7 +35,7 @@ std::vector<std::string> topLists(const PL& p, const std::string& file) {
   std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart",
                                     "Damage Models", "Compute Class Parameters", "Contact"};
   for (const std::string stem : {"Solver", "Output"}) {
-    const std::vector<std::string> lists = numberedLists(p, stem);
+    const std::vector<std::string> lists = stem == "Output" ? outputLists(p) : numberedLists(p, stem);
     tops.insert(tops.end(), lists.begin(), lists.end());
     if (!p.isSublist(stem)) tops.push_back(stem);  // so that a missing one is reported as such
   }

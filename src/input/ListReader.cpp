@@ -116,6 +116,18 @@ std::vector<std::string> numberedLists(const PL& deck, const std::string& stem) 
   return out;
 }
 
+std::vector<std::string> outputLists(const PL& deck) {
+  std::vector<std::string> out = numberedLists(deck, "Output");
+  for (auto it = deck.begin(); it != deck.end(); ++it) {
+    const std::string& n = deck.name(it);
+    const bool numbered = n.size() > 6 && n.find_first_not_of("0123456789", 6) == std::string::npos;
+    if (deck.entry(it).isList() && n.find("Output") != std::string::npos && n != "Output" &&
+        !(n.compare(0, 6, "Output") == 0 && numbered))
+      out.push_back(n);
+  }
+  return out;
+}
+
 ParamTree treeOf(const PL& l, const std::string& file, const std::string& path) {
   ParamTree t;
   for (auto it = l.begin(); it != l.end(); ++it) {

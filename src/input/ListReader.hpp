@@ -31,6 +31,10 @@ const PL& requireSublist(const PL& l, const std::string& name, const std::string
 // The top-level lists named stem ("Solver", "Output"): the plain one if present, then Peridigm's numbered
 // stem1, stem2, ... in increasing number.
 std::vector<std::string> numberedLists(const PL& deck, const std::string& stem);
+// The output lists: numberedLists(deck, "Output"), then, in the deck's order, every other top-level list whose
+// name contains "Output" ("Output Data", "Output History": Peridigm takes each such list, Peridigm.cpp
+// initializeOutputManager). A numbered name with a leading zero ("Output01") is neither (the deck parser says so).
+std::vector<std::string> outputLists(const PL& deck);
 
 // A copy of a list as typed values, for a library that reads it itself (NOX).
 ParamTree treeOf(const PL& l, const std::string& file, const std::string& path);

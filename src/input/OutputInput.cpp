@@ -1,4 +1,4 @@
-// An "Output" list (or Peridigm's Output1, Output2, ...) -> OutputSpec.
+// An "Output" list (or Peridigm's Output1, Output2, ..., "Output Data": any name containing Output) -> OutputSpec.
 #include <set>
 
 #include "Sections.hpp"

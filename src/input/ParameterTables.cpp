@@ -57,7 +57,7 @@ std::vector<ParameterTable> parameterTables() {
       {"contact-interaction", "Contact/Interactions/<any name> (a block pair)", contactPairSpecs()},
       {"contact-every", "Contact/Interactions/General Contact and Self Contact", contactEverySpecs()},
       {"solver", "Solver (or Solver1, Solver2, ...)", solverListSpecs()},
-      {"output", "Output (or Output1, Output2, ...)", outputSpecs()},
+      {"output", "Output (or Output1, Output2, ..., or any list whose name contains Output)", outputSpecs()},
       {"probe", "Output/Probes/<any name>", probeSpecs()},
       {"restart", "Restart", restartSpecs()},
       {"compute", "Compute Class Parameters/<any name>", computeSpecs()}};

@@ -159,6 +159,15 @@ double Model::adoptBreaks() {
 void Model::internalForce(const double* u, double* f) {
   layout_->importToOverlap(u, uOverlap_.data(), 3);
   for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
+  forceAtOverlapPositions(f);
+}
+
+void Model::internalForceAt(const double* y, double* f) {
+  layout_->importToOverlap(y, yOverlap_.data(), 3);  // a ghost gets its owner's position, bit for bit
+  forceAtOverlapPositions(f);
+}
+
+void Model::forceAtOverlapPositions(double* f) {
   std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
   updateFollowerLoads();
   imposeFields();
@@ -293,8 +302,9 @@ bool Model::forceDerivative(const double* u, const double* du, double* df) {
   return true;
 }
 
-void Model::addPrescribedDisplacement(NodalLoad load) {
+void Model::addPrescribedDisplacement(NodalLoad load, bool atInitialTime) {
   for (int i : load.nodes) prescribed_[3 * i + load.coordinate] = 1;
+  prescribedAtStart_.push_back(atInitialTime ? 1 : 0);
   prescribedLoads_.push_back(std::move(load));
 }
 
@@ -331,10 +341,11 @@ void Model::enforceRigidWalls(double dt, double* u, double* v, const double* a) 
   pf::enforceRigidWalls(walls_, x_, mass_, dt, u, v, wallReaction_, a, loss);
 }
 
-void Model::applyPrescribed(double t, double* u) const {
+void Model::applyPrescribed(double t, double* u, bool initialState) const {
   if (!clockStarted_) startTime_ = t, clockStarted_ = true;
   time_ = t;
-  for (const NodalLoad& l : prescribedLoads_) evaluate(l, x_, t, [u](int k, double v) { u[k] = v; });
+  for (std::size_t i = 0; i < prescribedLoads_.size(); ++i)
+    if (!initialState || prescribedAtStart_[i]) evaluate(prescribedLoads_[i], x_, t, [u](int k, double v) { u[k] = v; });
 }
 
 void Model::updateFollowerLoads() {

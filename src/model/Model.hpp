@@ -61,6 +61,9 @@ class Model {
   // Internal force density f (3 per owned node) for displacements u (3 per owned node). Computes the
   // materials' trial state. Throws ConstitutiveFailure on every rank if a material cannot update on any.
   void internalForce(const double* u, double* f);
+  // The same at given current positions y (3 per owned node) instead of x + u: for an integrator whose
+  // positions are rounded otherwise (Peridigm's Verlet forms y = (x + u_n) + dt v, not x + u_n+1).
+  void internalForceAt(const double* y, double* f);
   // df = (d f / d u) du at u, exactly, if every material has an exact tangent (returns false otherwise).
   bool forceDerivative(const double* u, const double* du, double* df);
   bool hasExactTangent() const;
@@ -115,7 +118,8 @@ class Model {
   int numNeighbors(int i) const { return layout_->family().offsets[i + 1] - layout_->family().offsets[i]; }
 
   // Boundary conditions
-  void addPrescribedDisplacement(NodalLoad load);
+  // atInitialTime false (Peridigm's): applyPrescribed(t, u, true), a solver's initial state, leaves it alone.
+  void addPrescribedDisplacement(NodalLoad load, bool atInitialTime = true);
   void addBodyForce(NodalLoad load);
   // One component of a follower Pressure (model/PressureLoad.hpp): value times factor at time t is that node's
   // reference traction over the layer thickness, which the NDO band turns with F (FamilyView::followerLoad). Part
@@ -125,7 +129,9 @@ class Model {
   // (FamilyView::time; the first t of the run is FamilyView::startTime). Every solver imposes the boundary
   // conditions of the time it evaluates, sub-steps included, so rate-dependent materials get the time
   // without any solver knowing about them.
-  void applyPrescribed(double t, double* u) const;
+  // initialState: the solver's start (not a resumed one), where only the conditions with atInitialTime are set:
+  // Peridigm applies a prescribed displacement as increments from the first step on (docs/input.md).
+  void applyPrescribed(double t, double* u, bool initialState = false) const;
   void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
@@ -230,6 +236,7 @@ class Model {
   void imposeFields();          // FieldSet::impose at time_, starting the fields first if needed
   int exchangeWidth_ = 0;                         // the widest Material::exchangeWidth of the blocks
   std::vector<double> exchange_, exchangeOwned_;  // per overlap node / owned node, exchangeWidth_ each
+  void forceAtOverlapPositions(double* f);  // internalForce's evaluation once yOverlap_ holds the positions
   // The second phase of internalForce at positions y (every two-phase block, or only those reading a field).
   void exchangeAndComplete(const double* y, bool onlyFieldReaders);
   static bool readsField(const BlockModel& b);    // its material reads a field (Material::fieldsRead)
@@ -240,6 +247,7 @@ class Model {
   double followerTime_ = NAN;
   void updateFollowerLoads();
   std::vector<char> prescribed_;
+  std::vector<char> prescribedAtStart_;  // per prescribedLoads_ entry: also applied in the initial state
   std::vector<RigidWall> walls_;
   std::vector<std::unique_ptr<ForceTerm>> forceTerms_;
   std::map<std::string, std::vector<double>> termOutputs_;  // per term's output name, 3 per owned node

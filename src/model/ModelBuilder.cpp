@@ -284,7 +284,7 @@ void addConditions(const Deck& deck, Problem& pb, const std::unordered_map<int, 
     }
     switch (bc.kind) {
       case ConditionSpec::Kind::PrescribedDisplacement:
-        pb.model->addPrescribedDisplacement(load);
+        pb.model->addPrescribedDisplacement(load, bc.atInitialTime);
         if (std::find(pb.prescribedNodeSets.begin(), pb.prescribedNodeSets.end(), bc.nodeSet) == pb.prescribedNodeSets.end())
           pb.prescribedNodeSets.push_back(bc.nodeSet);
         break;

@@ -33,6 +33,11 @@ SolverEntry ImplicitSolver::entry() {
                                     "residual, kg/m²) is at most this").byDefault("1e-6").positive(),
       S::integer("Maximum Solver Iterations", "Newton iterations per time step; a step still above the "
                                               "tolerance stops the run").byDefault("10").atLeast(1),
+      S::text("Initial Acceleration",
+              "the acceleration the first step starts from: Zero (Peridigm's: its loop never evaluates the initial "
+              "equation of motion) or Equation of Motion ((f + b)/ρ of the initial state, Newmark's consistent start; "
+              "they differ when the initial state carries a force: an initial displacement, a body force)")
+          .oneOf({"Zero", "Equation of Motion"}).byDefault("Zero"),
       S::flag("Verbose", "print NOX's residual history").byDefault("false")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     ImplicitOptions o;
@@ -42,6 +47,7 @@ SolverEntry ImplicitSolver::entry() {
     o.absoluteTolerance = p.get("Absolute Tolerance");
     o.newton.maxIterations = static_cast<int>(p.get("Maximum Solver Iterations"));
     o.newton.verbose = p.flag("Verbose");
+    o.initialEquationOfMotion = p.text("Initial Acceleration") == "Equation of Motion";
     o.where = p.where();
     o.newton.where = o.where;
     return std::unique_ptr<Solver>(new ImplicitSolver(o));
@@ -163,13 +169,14 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
   if (resume) {
     a = resume->vector("Acceleration");
   } else {
-    model.applyPrescribed(t0, u.data());
+    model.applyPrescribed(t0, u.data(), true);
     atStep(CheckPoint{"Implicit", 0, t0}, [&] { model.internalForce(u.data(), f.data()); });
     model.commit();
     model.bodyForce(t0, b.data());
-    // Newmark needs the initial acceleration M^-1 (f + b) (Peridigm starts from zero, the same only when
-    // the initial state is force-free, as in its decks).
-    for (int k = 0; k < n; ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
+    // Newmark's consistent start is a = M^-1 (f + b); Peridigm's executeImplicit never evaluates it and starts
+    // from a = 0 (Peridigm.cpp: `a` is first written by the first step's corrector), its decks' default.
+    if (opt_.initialEquationOfMotion)
+      for (int k = 0; k < n; ++k) a[k] = fixed[k] ? 0.0 : (f[k] + b[k]) / model.density()[k / 3];
     requireFiniteState(model, CheckPoint{"Implicit", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(v) + finiteProbe(f));
     observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0, &carry}, u, v, f);
   }

@@ -13,6 +13,7 @@ struct ImplicitOptions {
   double dt = 0.0;                  // Fixed dt (required)
   double beta = 0.25, gamma = 0.5;  // Newmark's; 1/4, 1/2: the trapezoidal rule (energy-conserving, linear)
   double absoluteTolerance = 1e-6;  // Peridigm's, on |beta dt^2 (rho a - f - b)| over free dofs
+  bool initialEquationOfMotion = false;  // a0 = (f + b)/rho (Newmark's) instead of Peridigm's a0 = 0
   NewtonKrylovOptions newton;       // maxIterations, preconditioner, NOX's lists; tolerances set by run()
   std::string where;                // the deck list, for warnings ("input.xml: Solver/Implicit")
 };

@@ -66,7 +66,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     // A checkpoint written before the peak load was carried resumes with its own step's scale.
     if (resume->scalars.count("Peak Load")) peakLoad = resume->scalar("Peak Load");
   } else {
-    model.applyPrescribed(t0, u.data());
+    model.applyPrescribed(t0, u.data(), true);
     atStep(CheckPoint{"quasi-static", 0, t0}, [&] { model.internalForce(u.data(), f.data()); });
     std::fill(v.begin(), v.end(), 0.0);
     requireFiniteState(model, CheckPoint{"quasi-static", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(f));

@@ -10,6 +10,7 @@
 #include "ExplicitFieldStep.hpp"
 #include "FiniteCheck.hpp"
 #include "PeridigmTimeStep.hpp"
+#include "VerletPeridigm.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
 #include "model/Model.hpp"
@@ -36,13 +37,20 @@ SolverEntry VerletSolver::entry() {
                   S::flag("Allow Unstable Time Step",
                           "accept a `Fixed dt` or `Safety Factor` more than 2 × the stable step estimate (otherwise an "
                           "input error)")
-                      .byDefault("false")};
+                      .byDefault("false"),
+                  S::text("Prescribed Velocity",
+                          "the velocity a prescribed component carries (and is written with): Half Kick (Peridigm's: "
+                          "the step's rate Δu/dt plus dt/2 (f + b)/ρ, its second half kick applied to every "
+                          "component) or Step Rate (Δu/dt alone, the component's own motion: 0 for a held one)")
+                      .oneOf({"Half Kick", "Step Rate"})
+                      .byDefault("Half Kick")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
     VerletOptions o;
     o.fixedDt = p.get("Fixed dt", 0.0);
     o.safetyFactor = p.get("Safety Factor");
     o.peridigmEstimate = p.text("Stable Step Estimate") == "Peridigm";
     o.allowUnstable = p.flag("Allow Unstable Time Step");
+    o.prescribedHalfKick = p.text("Prescribed Velocity") == "Half Kick";
     o.where = p.where();
     return std::unique_ptr<Solver>(new VerletSolver(o));
   };
@@ -72,34 +80,26 @@ struct ForceTimer {
   }
 };
 
-// The acceleration the next half step uses, (f + f_terms + b) / rho (f_terms: the model's force terms, contact;
-// empty without them), prescribed components too (their conditions then replace u and v; see the step loop).
+// The acceleration the next half step uses: zero on prescribed components, (f + f_terms + b) / rho elsewhere
+// (f_terms: the model's force terms, contact; empty without them).
 void acceleration(const Model& model, const std::vector<double>& f, const std::vector<double>& terms,
                   const std::vector<double>& b, std::vector<double>& a) {
+  const std::vector<char>& fixed = model.prescribedMask();
   for (std::size_t k = 0; k < a.size(); ++k)
-    a[k] = (f[k] + (terms.empty() ? 0.0 : terms[k]) + b[k]) / model.density()[k / 3];
+    a[k] = fixed[k] ? 0.0 : (f[k] + (terms.empty() ? 0.0 : terms[k]) + b[k]) / model.density()[k / 3];
 }
 
-// The model's force terms (contact) for the integrator: their sum ft at the step's positions and half-step
-// velocities, the positions formed as Peridigm forms them, x + u_n + dt v_n+1/2 (its contact sees those bits).
+// The model's force terms (contact) for the integrator: their sum ft at the step's positions y (the ones the
+// materials see, VerletPeridigm.hpp: Peridigm's, which its contact sees too) and half-step velocities v.
 class TermForces {
  public:
-  TermForces(const Model& model, bool on) : ft(on ? model.numDofs() : 0), x_(model.coordinates()), y_(ft.size()) {}
+  TermForces(const Model& model, bool on) : ft(on ? model.numDofs() : 0) {}
   bool on() const { return !ft.empty(); }
   double operator[](std::size_t k) const { return ft.empty() ? 0.0 : ft[k]; }
-  void atStart(Model& model, double t, const std::vector<double>& u, const std::vector<double>& v) {
-    for (std::size_t k = 0; k < y_.size(); ++k) y_[k] = x_[k] + u[k];
-    model.termForce(0, t, y_.data(), v.data(), ft.data());
-  }
-  void atStep(Model& model, long s, double t, double dt, const std::vector<double>& uPrev, const std::vector<double>& v) {
-    for (std::size_t k = 0; k < y_.size(); ++k) y_[k] = x_[k] + uPrev[k] + dt * v[k];
-    pf::atStep(CheckPoint{"Verlet", s, t}, [&] { model.termForce(s, t, y_.data(), v.data(), ft.data()); });
+  void evaluate(Model& model, long s, double t, const std::vector<double>& y, const std::vector<double>& v) {
+    atStep(CheckPoint{"Verlet", s, t}, [&] { model.termForce(s, t, y.data(), v.data(), ft.data()); });
   }
   std::vector<double> ft;  // 3 per owned node; empty without terms
-
- private:
-  const std::vector<double>& x_;
-  std::vector<double> y_;
 };
 
 }  // namespace
@@ -161,10 +161,10 @@ void VerletSolver::check(const Model& model) const {
 // The step's end state at t: the force at u (mechanics) or only the conditions of t, then the field advanced over
 // dt (0: the start, nothing to advance), then the commit.
 void VerletSolver::evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt,
-                            std::vector<double>& u, std::vector<double>& f) const {
+                            const std::vector<double>& y, std::vector<double>& f) const {
   const CheckPoint at{"Verlet", step, t};
   if (advances("Displacement"))
-    atStep(at, [&] { model.internalForce(u.data(), f.data()); });
+    atStep(at, [&] { model.internalForceAt(y.data(), f.data()); });
   else
     model.updateFields();
   if (heat && dt > 0.0) atStep(at, [&] { heat->advance(model, dt, advances("Displacement")); });
@@ -185,8 +185,7 @@ long VerletSolver::stepCount(double duration, double& dt, const SolverResume* re
   // A Fixed dt takes floor(duration / dt) steps, as Peridigm (Peridigm.cpp, executeExplicit): a quotient that rounds
   // below an integer (0.01 / 2e-5 = 499.99999999999994) takes one step less, ending before the end time. The default
   // step is shortened to land on it (ceil, a quotient within 1e-9 above an integer taken as it).
-  if (opt_.fixedDt > 0 || (opt_.peridigmEstimate && advances("Displacement")))
-    return std::max(1L, static_cast<long>(std::floor(duration / dt)));
+  if (!landsOnEnd()) return std::max(1L, static_cast<long>(std::floor(duration / dt)));
   const long steps = std::max(1L, static_cast<long>(std::ceil(duration / dt - 1e-9)));
   dt = duration / steps;
   return steps;
@@ -207,10 +206,9 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   if (root && heat)
     std::printf("Verlet: Temperature by %ld explicit sub-step(s) per step (stable step %.6g s)\n", heat->subSteps(dt),
                 heat->stableStep());
-
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double>& rho = model.density();
-  std::vector<double> f(n), b(n), a(n), uPrev(n);
+  std::vector<double> f(n), b(n), a(n), uPrev(n), y(n);
   TermForces terms(model, mechanics && model.hasForceTerms());
   // f and the terms' ft are all a later step needs of this one besides u, v and the committed state.
   SolverCarry carry{{{"Force_Density", &f}}, {{"dt", dt}, {"steps", static_cast<double>(steps)}}};
@@ -220,9 +218,10 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     if (terms.on()) terms.ft = resume->vector("Force_Terms");
     model.bodyForce(resume->time, b.data());
   } else {
-    model.applyPrescribed(t0, u.data());
-    evaluate(model, heat.get(), 0, t0, 0.0, u, f);
-    if (terms.on()) terms.atStart(model, t0, u, v);
+    model.applyPrescribed(t0, u.data(), true);
+    verletPositions(model, u, u, v, 0.0, y);
+    evaluate(model, heat.get(), 0, t0, 0.0, y, f);
+    if (terms.on()) terms.evaluate(model, 0, t0, y, v);
     model.bodyForce(t0, b.data());
   }
   if (mechanics) acceleration(model, f, terms.ft, b, a);  // a thermal-only run leaves u and v alone
@@ -238,7 +237,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   auto runStart = Clock::now();
   for (long s = resume ? resume->step + 1 : 1; s <= steps; ++s) {
     auto start = Clock::now();
-    const double t = (s == steps && opt_.fixedDt <= 0) ? t1 : t0 + s * dt;
+    const double t = (s == steps && landsOnEnd()) ? t1 : t0 + s * dt;
     uPrev = u;
     const double rate = 1.0 / (t - (t0 + (s - 1) * dt));  // Peridigm's DirichletIncrementBC: change / (t - t_prev)
     for (int k = 0; k < n; ++k) {
@@ -249,17 +248,17 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) * rate;
-    forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, u, f); });
-    if (terms.on()) terms.atStep(model, s, t, dt, uPrev, v);
+    verletPositions(model, uPrev, u, v, dt, y);
+    forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, y, f); });
+    if (terms.on()) terms.evaluate(model, s, t, y, v);
     if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)
-    // Prescribed components too get the second half kick, as Peridigm's executeExplicit (its condition sets only the
-    // half-step velocity); the next step's condition replaces u and v there: only the written velocity differs.
     for (int k = 0; k < n; ++k) {
-      a[k] = mechanics ? (f[k] + terms[k] + b[k]) / rho[k / 3] : 0.0;
-      v[k] += 0.5 * dt * a[k];
+      a[k] = fixed[k] || !mechanics ? 0.0 : (f[k] + terms[k] + b[k]) / rho[k / 3];
+      if (!fixed[k]) v[k] += 0.5 * dt * a[k];
       probe += u[k] + v[k] + f[k] + terms[k];
     }
+    if (opt_.prescribedHalfKick && mechanics) halfKickPrescribed(fixed, rho, f, b, dt, v);
     requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall, &carry}, u, v, f);

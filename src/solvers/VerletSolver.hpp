@@ -20,6 +20,7 @@ struct VerletOptions {
   double safetyFactor = 0.8;  // used when fixedDt == 0
   bool peridigmEstimate = true;  // without fixedDt: Peridigm's critical step (PeridigmTimeStep.hpp), else the bound
   bool allowUnstable = false; // accept fixedDt > kRefuseFactor x the stable step
+  bool prescribedHalfKick = true;  // Peridigm's velocity of a prescribed component (VerletPeridigm.hpp)
   std::string where;          // the deck list, for input errors ("input.xml: Solver/Verlet")
 };
 
@@ -45,9 +46,14 @@ class VerletSolver : public Solver {
   // The number of steps over `duration` at dt (dt then lands on the end time unless fixed), or a resumed run's dt
   // and count.
   long stepCount(double duration, double& dt, const SolverResume* resume) const;
+  // Whether dt is shortened to end on the end time (the stiffness bound, or a thermal-only run's field step), not
+  // Peridigm's floor of the steps (a Fixed dt, or its critical step).
+  bool landsOnEnd() const {
+    return opt_.fixedDt <= 0 && !(opt_.peridigmEstimate && advances("Displacement"));
+  }
   // The Temperature field's explicit step when the deck has Verlet advance it (the field then marked solved), or null.
   std::unique_ptr<ExplicitFieldStep> heatStep(Model& model) const;
-  void evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt, std::vector<double>& u,
+  void evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt, const std::vector<double>& y,
                 std::vector<double>& f) const;
   VerletOptions opt_;
 };

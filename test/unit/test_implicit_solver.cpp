@@ -33,6 +33,8 @@ TEST(ImplicitSolver, EntryDeclaresPeridigmsNamesDefaultsAndNewmarksRanges) {
   EXPECT_EQ(spec(*e, "Gamma").defaultValue, "0.5");
   EXPECT_EQ(spec(*e, "Absolute Tolerance").defaultValue, "1e-6");
   EXPECT_EQ(spec(*e, "Maximum Solver Iterations").defaultValue, "10");
+  // Peridigm's executeImplicit starts from a = 0 (its gold for a deck with an initial force needs it)
+  EXPECT_EQ(spec(*e, "Initial Acceleration").defaultValue, "Zero");
   // Beta in (0, 1/2]: 0 would be the explicit central difference (not this solver), above 1/2 not Newmark's
   // second-order family; Gamma >= 1/2 (below it the scheme amplifies every mode).
   const pf::ParameterSpec& beta = spec(*e, "Beta");

@@ -249,6 +249,44 @@ TEST(InputSchema, OutputErrors) {
   EXPECT_INPUT_ERROR(pf::parseDeck(*r, kFile), kFile, "'Reactions' names undefined node set 'Nowhere'");
 }
 
+// Peridigm takes every top-level list whose name contains "Output" as an output list (Peridigm.cpp,
+// initializeOutputManager): "Output Data" (its VariableHorizonParsing and contact decks) is one.
+TEST(InputSchema, OutputListsAreThoseWhoseNameContainsOutput) {
+  auto p = base();
+  Teuchos::ParameterList data = p->sublist("Output");
+  data.set("Output Filename", std::string("data"));
+  p->set("Output Data", data);
+  p->set("Output2", data);
+  p->sublist("Output2").set("Output Filename", std::string("second"));
+  const pf::Deck deck = pf::parseDeck(*p, kFile);
+  ASSERT_EQ(deck.outputs.size(), 3u);  // Output, the numbered Output2, then the others in the deck's order
+  EXPECT_EQ(deck.outputs[0].filename, "out");
+  EXPECT_EQ(deck.outputs[1].filename, "second");
+  EXPECT_EQ(deck.outputs[2].filename, "data");
+  auto q = base();
+  q->set("Output01", data);
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "'Output01': a numbered Output list");
+}
+
+// Peridigm leaves a prescribed displacement out of the initial state (its increments start at the first step).
+TEST(InputSchema, ApplyAtInitialTimeIsAPrescribedDisplacementsSwitch) {
+  const pf::Deck deck = pf::parseDeck(*base(), kFile);
+  ASSERT_FALSE(deck.conditions.empty());
+  EXPECT_EQ(deck.conditions[0].kind, pf::ConditionSpec::Kind::PrescribedDisplacement);
+  EXPECT_FALSE(deck.conditions[0].atInitialTime);
+  auto p = base();
+  p->sublist("Boundary Conditions").sublist("Fix Left").set("Apply At Initial Time", true);
+  EXPECT_TRUE(pf::parseDeck(*p, kFile).conditions[0].atInitialTime);
+  auto q = base();
+  Teuchos::ParameterList& push = q->sublist("Boundary Conditions").sublist("Push");
+  push.set("Type", std::string("Body Force"));
+  push.set("Node Set", std::string("Min X Node Set"));
+  push.set("Coordinate", std::string("x"));
+  push.set("Value", std::string("1.0"));
+  push.set("Apply At Initial Time", true);
+  EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "'Apply At Initial Time' applies to a Prescribed Displacement only");
+}
+
 TEST(Input, ReadsXmlAndYamlAndNamesBadFiles) {
   const std::string xml = pftest::writeTemp("pf_deck.xml", baseDeck());
   auto p = pf::readInput(xml);
