@@ -88,7 +88,11 @@ std::vector<ParameterSpec> contactSpecs() {
                                    "at least the largest Contact Radius").need().positive(),
           S::integer("Search Frequency", "look for partners at the start and every n-th step (a point's partners stay "
                                          "fixed in between)").need().atLeast(1),
-          S::flag("Verbose", "accepted (Peridigm prints its interactions)").byDefault("false")};
+          S::flag("Verbose", "accepted (Peridigm prints its interactions)").byDefault("false"),
+          S::flag("Only Listed Interactions",
+                  "false (Peridigm's): every block touches every block, itself included, by the first of Models, "
+                  "as Peridigm's contact does whatever Interactions say (they are still checked); true: only the "
+                  "pairs Interactions name, each by its own model").byDefault("false")};
 }
 
 std::vector<ParameterSpec> contactModelSpecs() {
@@ -118,6 +122,7 @@ ContactSpec parseContact(const PL& deck, const std::vector<SolverSpec>& solvers,
   spec.given = true;
   spec.searchRadius = v.get("Search Radius");
   spec.searchFrequency = static_cast<int>(v.get("Search Frequency"));
+  spec.onlyListedInteractions = v.flag("Only Listed Interactions");
   const PL& models = requireSublist(c, "Models", file, "Contact");
   for (auto it = models.begin(); it != models.end(); ++it) {
     const std::string& n = models.name(it);

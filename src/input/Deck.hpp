@@ -143,6 +143,9 @@ struct ContactInteractionSpec {
 };
 struct ContactSpec {
   bool given = false;
+  // false (Peridigm's): every block touches every block, itself included, by the first of `models` (its
+  // ContactManager reads the interactions but applies none); true: only the interactions' pairs, each by its model.
+  bool onlyListedInteractions = false;
   double searchRadius = 0.0;
   int searchFrequency = 1;
   std::vector<ContactModelSpec> models;

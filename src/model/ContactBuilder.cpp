@@ -16,8 +16,9 @@ int blockIdOf(const std::string& name) {
   return at == std::string::npos ? 0 : std::atoi(name.c_str() + at + 1);
 }
 
-// (block, block) -> law: General Contact every pair of two blocks, Self Contact every block with itself, a named
-// pair its two blocks; a named pair overrides General or Self for its blocks.
+// (block, block) -> law. Only Listed Interactions: General Contact every pair of two blocks, Self Contact every block
+// with itself, a named pair its two blocks (overriding General or Self for them). Otherwise Peridigm's: every pair,
+// itself included, by the first model (the interactions are resolved all the same, so a bad one is still an error).
 std::map<std::pair<int, int>, int> interactingPairs(const Deck& deck, const std::map<int, double>& horizonOf) {
   std::map<std::pair<int, int>, int> every, named;
   std::map<std::pair<int, int>, std::string> namedBy;
@@ -43,7 +44,12 @@ std::map<std::pair<int, int>, int> interactingPairs(const Deck& deck, const std:
     namedBy[key] = c.name;
   }
   for (const auto& kv : named) every[kv.first] = kv.second;
-  return every;
+  if (deck.contact.onlyListedInteractions) return every;
+  std::map<std::pair<int, int>, int> all;  // Peridigm's: every pair, itself included, by the first model
+  for (const auto& a : horizonOf)
+    for (const auto& b : horizonOf)
+      if (a.first <= b.first) all[{a.first, b.first}] = 0;
+  return all;
 }
 
 }  // namespace

@@ -35,11 +35,13 @@ struct BlockSpec {
   std::shared_ptr<const BondFilters> initialBreaks;     // Initial Damage
 };
 
-// The bulk modulus of a material that has two of Peridigm's elastic constants (core/ElasticModuli.hpp), else 0.
+// The bulk modulus of a material: its `Bulk Modulus`, or from two of Peridigm's elastic constants
+// (core/ElasticModuli.hpp); 0 if it has neither (Diffusion).
 double bulkModulusOf(const MaterialSpec& m) {
-  for (const char* k : {"Bulk Modulus", "Shear Modulus", "Young's Modulus", "Poisson's Ratio"})
-    if (m.values.has(k)) return elasticModuliFrom(m.values).bulk;
-  return 0.0;
+  int given = 0;
+  for (const char* k : {"Bulk Modulus", "Shear Modulus", "Young's Modulus", "Poisson's Ratio"}) given += m.values.has(k);
+  if (given >= 2) return elasticModuliFrom(m.values).bulk;
+  return m.values.has("Bulk Modulus") ? m.values.get("Bulk Modulus") : 0.0;
 }
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the

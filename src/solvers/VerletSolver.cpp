@@ -99,7 +99,17 @@ class TermForces {
   void evaluate(Model& model, long s, double t, const std::vector<double>& y, const std::vector<double>& v) {
     atStep(CheckPoint{"Verlet", s, t}, [&] { model.termForce(s, t, y.data(), v.data(), ft.data()); });
   }
+  // f + ft (the force Peridigm's last half kick uses at prescribed components), or f itself without terms.
+  const std::vector<double>& plus(const std::vector<double>& f) {
+    if (ft.empty()) return f;
+    sum_.resize(f.size());
+    for (std::size_t k = 0; k < f.size(); ++k) sum_[k] = f[k] + ft[k];
+    return sum_;
+  }
   std::vector<double> ft;  // 3 per owned node; empty without terms
+
+ private:
+  std::vector<double> sum_;
 };
 
 }  // namespace
@@ -258,7 +268,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
       if (!fixed[k]) v[k] += 0.5 * dt * a[k];
       probe += u[k] + v[k] + f[k] + terms[k];
     }
-    if (opt_.prescribedHalfKick && mechanics) halfKickPrescribed(fixed, rho, f, b, dt, v);
+    if (opt_.prescribedHalfKick && mechanics) halfKickPrescribed(fixed, rho, terms.plus(f), b, dt, v);
     requireFiniteState(model, CheckPoint{"Verlet", s, t}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall, &carry}, u, v, f);
