@@ -94,8 +94,17 @@ class Tol:
         return self.kind == "ignore" or maxdiff <= self.value
 
 
+def _is_number(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
+
+
 def _parse_tol(tokens, where, default=None):
-    """Parse '[<type> <value>] [floor <f>]'; returns Tol or default if no type given."""
+    """Parse '[<type>] <value> [floor <f>]'; returns Tol or default if no value given. A value without a type keeps
+    the default's type, as SEACAS exodiff reads it (a type keyword only changes the type before its value)."""
     tol = None
     i = 0
     floor = None
@@ -118,6 +127,9 @@ def _parse_tol(tokens, where, default=None):
                 raise UsageError("%s: 'floor' needs a value" % where)
             floor = float(tokens[i + 1])
             i += 2
+        elif tol is None and default is not None and _is_number(t):
+            tol = Tol(default.kind, float(t), default.floor)
+            i += 1
         else:
             raise UsageError("%s: unexpected token '%s'" % (where, tokens[i]))
     if tol is None:
@@ -174,7 +186,7 @@ class CompSpec:
                 if name.startswith("!"):
                     sec["exclude"].add(name[1:])
                     continue
-                sec["include"][name] = _parse_tol(tokens[1:], where)
+                sec["include"][name] = ("VAR", tokens[1:], where)  # resolved against the section's tolerance below
                 continue
             current = None
             if upper.startswith("DEFAULT TOLERANCE"):
@@ -200,8 +212,8 @@ class CompSpec:
         for sec in c.sections.values():
             _, toks, where = sec["tol"]
             sec["tol"] = _parse_tol(toks, where, c.default)
-            for name, t in list(sec["include"].items()):
-                sec["include"][name] = t if t is not None else sec["tol"]
+            for name, (_, vtoks, vwhere) in list(sec["include"].items()):
+                sec["include"][name] = _parse_tol(vtoks, vwhere, sec["tol"])
             if not sec["include"]:
                 sec["all"] = True  # a bare section compares everything
         return c
