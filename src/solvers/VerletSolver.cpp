@@ -157,10 +157,15 @@ void VerletSolver::check(const Model& model) const {
   // Peridigm's estimate is checked as a Fixed dt is: it is no bound on every model's stiffness.
   const double stable = stableTimeStep(model, true);
   if (std::isinf(stable)) return;
-  const double dt = opt_.fixedDt > 0 ? opt_.fixedDt : opt_.safetyFactor * peridigmCriticalTimeStep(model);
-  char msg[240];
-  std::snprintf(msg, sizeof msg, "%s = %g exceeds the stable time step estimate %g (%.3g times)",
-                opt_.fixedDt > 0 ? "Fixed dt" : "'Safety Factor' x Peridigm's critical step", dt, stable, dt / stable);
+  const double critical = opt_.fixedDt > 0 ? 0.0 : peridigmCriticalTimeStep(model);
+  const double dt = opt_.fixedDt > 0 ? opt_.fixedDt : opt_.safetyFactor * critical;
+  char what[120], msg[320];
+  if (opt_.fixedDt > 0)
+    std::snprintf(what, sizeof what, "Fixed dt = %g", dt);
+  else
+    std::snprintf(what, sizeof what, "'Safety Factor' = %g x Peridigm's critical step %g = %g", opt_.safetyFactor,
+                  critical, dt);
+  std::snprintf(msg, sizeof msg, "%s exceeds the stable time step estimate %g (%.3g times)", what, stable, dt / stable);
   if (dt > kRefuseFactor * stable && !opt_.allowUnstable)
     throw InputError(opt_.where + ": " + msg + "; above " + std::to_string(static_cast<int>(kRefuseFactor)) +
                      " times it is refused unless 'Allow Unstable Time Step' is true (or 'Stable Step Estimate' = "
