@@ -51,4 +51,14 @@ bool addShortRangeForce(const ShortRangeForceLaw& law, double friction, const Co
   return true;
 }
 
+double shortRangeHalfEnergy(const ShortRangeForceLaw& law, const ContactPair& p, double volumeI) {
+  const double rc = law.contactRadius;
+  const double dy[3] = {p.yi[0] - p.yj[0], p.yi[1] - p.yj[1], p.yi[2] - p.yj[2]};
+  const double d2 = dy[0] * dy[0] + dy[1] * dy[1] + dy[2] * dy[2];
+  if (!(d2 < rc * rc)) return 0.0;
+  auto c = [&](double h) { return 9.0 * law.springConstant / (M_PI * h * h * h * h * h); };
+  const double overlap = rc - std::sqrt(d2);
+  return 0.25 * (c(p.horizonI) + c(p.horizonJ)) * volumeI * p.volumeJ * overlap * overlap;
+}
+
 }  // namespace pf

@@ -25,4 +25,9 @@ struct ContactPair {
 // 9 k / (pi h^4) per end, "half of 18" as each end adds to both points, times (r_c - d) / h.
 bool addShortRangeForce(const ShortRangeForceLaw& law, double friction, const ContactPair& p, double* fi);
 
+// i's half of the energy the pair's normal spring stores, (1/4) (c(h_i) + c(h_j)) V_i V_j (r_c - d)^2 (0 when
+// d >= r_c): the normal force on i, (c(h_i) + c(h_j)) V_i V_j (r_c - d), is minus its derivative in d, and the
+// pair's other half is j's. Friction's work is not stored (it is dissipated).
+double shortRangeHalfEnergy(const ShortRangeForceLaw& law, const ContactPair& p, double volumeI);
+
 }  // namespace pf

@@ -92,18 +92,65 @@ void ContactForce::force(long step, double t, const double* y, const double* v, 
   const PointCloud& g = ghosts_.ghosts();
   ghostYV_.resize(6 * g.gid.size());
   ghosts_.update(ownedYV_.data(), ghostYV_.data(), 6);
-  std::vector<double> mu(setup_.laws.size());
-  for (std::size_t l = 0; l < mu.size(); ++l) mu[l] = setup_.laws[l].frictionAt(t);
+  mu_.resize(setup_.laws.size());
+  for (std::size_t l = 0; l < mu_.size(); ++l) mu_[l] = setup_.laws[l].frictionAt(t);
   std::fill(f, f + 3 * static_cast<std::size_t>(numOwned), 0.0);
   for (int i = 0; i < numOwned; ++i)
+    for (int k = offsets_[i]; k < offsets_[i + 1]; ++k)
+      addShortRangeForce(setup_.laws[partnerLaw_[k]].law, mu_[partnerLaw_[k]], pairOf(i, k), &f[3 * i]);
+}
+
+ContactPair ContactForce::pairOf(int i, int k) const {
+  const int numOwned = layout_.numOwned();
+  const int c = partners_[k];
+  const bool owned = c < numOwned;
+  const double* yv = owned ? &ownedYV_[6 * c] : &ghostYV_[6 * (c - numOwned)];
+  return ContactPair{&ownedYV_[6 * i], yv, &ownedYV_[6 * i + 3], yv + 3,
+                     owned ? volume_[c] : ghosts_.ghosts().volume[c - numOwned], horizon_[i],
+                     owned ? horizon_[c] : ghostHorizon_[c - numOwned]};
+}
+
+int ContactForce::partnerBlock(int k) const {
+  const int numOwned = layout_.numOwned(), c = partners_[k];
+  return c < numOwned ? block_[c] : ghosts_.ghosts().block[c - numOwned];
+}
+
+double ContactForce::storedEnergy() const {
+  double e = 0.0;
+  if (ownedYV_.empty()) return e;  // no force() yet
+  for (int i = 0; i < layout_.numOwned(); ++i)
+    for (int k = offsets_[i]; k < offsets_[i + 1]; ++k)
+      e += shortRangeHalfEnergy(setup_.laws[partnerLaw_[k]].law, pairOf(i, k), volume_[i]);
+  return e;
+}
+
+std::vector<std::string> ContactForce::historyNames() const {
+  std::vector<std::string> names;
+  for (const auto& [pair, law] : setup_.lawOf)
+    if (pair.first != pair.second)
+      for (const char* c : {"X", "Y", "Z"})
+        names.push_back("Contact_Force_On_block_" + std::to_string(pair.first) + "_From_block_" +
+                        std::to_string(pair.second) + "_" + c);
+  return names;
+}
+
+// The force on block a from block b (a < b) is the sum over a's owned points of V_i times the density its
+// partners in b give; b's from a is its opposite (the law conserves momentum), so it is not written.
+std::vector<double> ContactForce::historyShares() const {
+  std::map<std::pair<int, int>, std::size_t> column;
+  for (const auto& [pair, law] : setup_.lawOf)
+    if (pair.first != pair.second) column.emplace(pair, 3 * column.size());
+  std::vector<double> share(3 * column.size(), 0.0);
+  if (ownedYV_.empty()) return share;
+  for (int i = 0; i < layout_.numOwned(); ++i)
     for (int k = offsets_[i]; k < offsets_[i + 1]; ++k) {
-      const int c = partners_[k];
-      const bool owned = c < numOwned;
-      const double* yv = owned ? &ownedYV_[6 * c] : &ghostYV_[6 * (c - numOwned)];
-      const ContactPair p{&ownedYV_[6 * i], yv, &ownedYV_[6 * i + 3], yv + 3, owned ? volume_[c] : g.volume[c - numOwned],
-                          horizon_[i], owned ? horizon_[c] : ghostHorizon_[c - numOwned]};
-      addShortRangeForce(setup_.laws[partnerLaw_[k]].law, mu[partnerLaw_[k]], p, &f[3 * i]);
+      const auto it = column.find({block_[i], partnerBlock(k)});
+      if (it == column.end()) continue;  // the same block, or i in the pair's larger block
+      double fi[3] = {0.0, 0.0, 0.0};
+      addShortRangeForce(setup_.laws[partnerLaw_[k]].law, mu_[partnerLaw_[k]], pairOf(i, k), fi);
+      for (int c = 0; c < 3; ++c) share[it->second + c] += volume_[i] * fi[c];
     }
+  return share;
 }
 
 }  // namespace pf

@@ -40,12 +40,19 @@ class ContactForce : public ForceTerm {
   ContactForce(const DistributedLayout& layout, std::vector<double> volume, std::vector<int> block, ContactSetup setup);
   std::string outputName() const override { return "Contact_Force_Density"; }
   void force(long step, double t, const double* y, const double* v, double* f) override;
+  double storedEnergy() const override;
+  // Contact_Force_On_block_<a>_From_block_<b>_X, _Y, _Z (N) for each pair a < b of interacting blocks.
+  std::vector<std::string> historyNames() const override;
+  std::vector<double> historyShares() const override;
   // Partners found at the last search, over this rank's owned points (for the benchmark's counts).
   std::size_t numPartners() const { return partners_.size(); }
 
  private:
   void search(const std::vector<double>& y);  // collective: ghosts and partners at positions y (owned)
   int lawBetween(int blockA, int blockB) const;
+  // Owned point i and its k-th partner (partners_ index) as the law sees them, at the last force()'s state.
+  ContactPair pairOf(int i, int k) const;
+  int partnerBlock(int k) const;
   const DistributedLayout& layout_;
   std::vector<double> volume_;  // per overlap point
   std::vector<int> block_;          // per owned point
@@ -57,6 +64,7 @@ class ContactForce : public ForceTerm {
   // else numOwned + a ghost), in gid order, and the law of each pair.
   std::vector<int> offsets_, partners_, partnerLaw_;
   std::vector<double> ownedYV_, ghostYV_;  // y and v, 6 per point
+  std::vector<double> mu_;                   // per law: its friction coefficient at the last force()'s time
   std::vector<double> horizon_, ghostHorizon_;  // per owned point, per ghost: its block's horizon
 };
 

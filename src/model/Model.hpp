@@ -160,6 +160,11 @@ class Model {
   bool hasForceTerms() const { return !forceTerms_.empty(); }
   void termForce(long step, double t, const double* y, const double* v, double* f);
   const std::vector<double>* termOutput(const std::string& name) const;
+  // At the last termForce, over this rank's owned points: the energy the terms store (J), and the terms' own
+  // history columns (names the same on every rank) with this rank's shares of their values (to be summed).
+  double termEnergy() const;
+  std::vector<std::string> termHistoryNames() const;
+  std::vector<double> termHistoryShares() const;
 
   // The nodal fields beside the displacement (model/FieldSet.hpp): addField declares one (its state joins
   // state()); every force evaluation first imposes its conditions of the evaluated time and ghosts it, and each

@@ -24,4 +24,28 @@ const std::vector<double>* Model::termOutput(const std::string& name) const {
   return it == termOutputs_.end() ? nullptr : &it->second;
 }
 
+double Model::termEnergy() const {
+  double e = 0.0;
+  for (const std::unique_ptr<ForceTerm>& term : forceTerms_) e += term->storedEnergy();
+  return e;
+}
+
+std::vector<std::string> Model::termHistoryNames() const {
+  std::vector<std::string> names;
+  for (const std::unique_ptr<ForceTerm>& term : forceTerms_) {
+    const std::vector<std::string> own = term->historyNames();
+    names.insert(names.end(), own.begin(), own.end());
+  }
+  return names;
+}
+
+std::vector<double> Model::termHistoryShares() const {
+  std::vector<double> shares;
+  for (const std::unique_ptr<ForceTerm>& term : forceTerms_) {
+    const std::vector<double> own = term->historyShares();
+    shares.insert(shares.end(), own.begin(), own.end());
+  }
+  return shares;
+}
+
 }  // namespace pf

@@ -156,6 +156,8 @@ std::vector<std::string> OutputManager::historyColumns() const {
     for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(r.label) + "_" + c);
   for (const RigidWall& w : model_.rigidWalls())
     for (const char* c : {"X", "Y", "Z"}) cols.push_back("Reaction_" + label(w.name) + "_" + c);
+  const std::vector<std::string> terms = model_.termHistoryNames();
+  cols.insert(cols.end(), terms.begin(), terms.end());
   for (const Probe& p : probes_)
     for (const std::string& var : p.variables) {
       if (isCoreVectorField(var))
@@ -260,6 +262,8 @@ std::vector<double> OutputManager::historyRow(const StepReport& report, const st
     }
   // A rigid wall's force on the body in the step just taken (model/RigidWall.hpp).
   local.insert(local.end(), model_.wallReactions().begin(), model_.wallReactions().end());
+  const std::vector<double> terms = model_.termHistoryShares();  // contact: each block pair's force
+  local.insert(local.end(), terms.begin(), terms.end());
   for (const Probe& p : probes_)
     for (const std::string& var : p.variables) {
       const int ncomp = isCoreVectorField(var) ? 3 : 1;
@@ -281,7 +285,9 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
   std::map<std::string, double> globals;
   for (const std::string& var : globals_) {
     double e = 0.0;
-    if (const char* field = globalSourceField(var)) {  // a node field of energies per node, summed
+    if (var == "Global_Contact_Energy") {
+      e = model_.termEnergy();
+    } else if (const char* field = globalSourceField(var)) {  // a node field of energies per node, summed
       const double* per = model_.state().committed(field);
       for (int i = 0; i < model_.numOwned(); ++i) e += per[i];
     } else {  // Global_Kinetic_Energy = sum 1/2 rho V |v|^2

@@ -122,6 +122,8 @@ std::string OutputManager::storedComponent(const std::string& var) const {
 // a material field from every block's material (a block without it would drop out of the sum silently).
 // Collective (each rank checks its own blocks; a failure on one is every rank's error).
 void OutputManager::requireGlobal(const std::string& var, const std::string& where) const {
+  if (var == "Global_Contact_Energy" && !model_.hasForceTerms())  // the same model on every rank
+    throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs a Contact list");
   const char* field = globalSourceField(var);
   if (!field) return;
   const std::string f = field;

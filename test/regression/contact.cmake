@@ -27,3 +27,10 @@ endforeach()
 # The Contact list's input errors: one line naming the file and the parameter, no output.
 add_test(NAME contact_input_errors COMMAND ${PY} ${REG}/contact/run_contact_errors.py ${PERIFORGE_EXE} ${REG}/contact/pair.xml)
 set_tests_properties(contact_input_errors PROPERTIES LABELS "regression")
+
+# Symmetric rod-on-rod Taylor impact (examples/contact): two bars at +-200 m/s through the contact law against the
+# same bar on the rigid wall at 200 m/s (taylor.cmake's run): L_f/L0 within 1 %, momentum, contact impulse, and the
+# energy balance with the contact springs' energy within 1 % at every step (check_rod_on_rod.py).
+periforge_run(contact_rod_on_rod_np2 ${PROJECT_SOURCE_DIR}/examples/contact/rod_on_rod_coarse.xml 2)
+periforge_check(contact_rod_on_rod_check "contact_rod_on_rod_np2;taylor_coarse_np2"
+  ${PY} ${REG}/contact/check_rod_on_rod.py ${CONTACT_BIN}/contact_rod_on_rod_np2 ${CONTACT_BIN}/taylor_coarse_np2)

@@ -56,5 +56,23 @@ TEST(ShortRangeContact, PairForcesBalance) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(fi[c] * Vi, -fj[c] * Vj, 1e-12 * std::fabs(fi[0] * Vi));
 }
 
+TEST(ShortRangeContact, StoredEnergyIsThePotentialOfTheNormalForce) {
+  // Both halves of the pair's energy, U(d), against the normal force on i: F = -dU/dd along the pair, by a central
+  // difference (step 1e-6 of r_c: the quadratic U makes the difference exact up to round-off, 1e-8 relative).
+  const double Vi = 0.8, Vj = 1.3, hi = 1.0, hj = 1.2, v[3] = {0, 0, 0};
+  auto energy = [&](double d) {
+    const double yi[3] = {0, 0, 0}, yj[3] = {d, 0, 0};
+    return shortRangeHalfEnergy(kLaw, ContactPair{yi, yj, v, v, Vj, hi, hj}, Vi) +
+           shortRangeHalfEnergy(kLaw, ContactPair{yj, yi, v, v, Vi, hj, hi}, Vj);
+  };
+  const double d = 0.3, h = 1e-6 * kLaw.contactRadius;
+  const double yi[3] = {0, 0, 0}, yj[3] = {d, 0, 0};
+  double f[3] = {0, 0, 0};
+  ASSERT_TRUE(addShortRangeForce(kLaw, 0.0, ContactPair{yi, yj, v, v, Vj, hi, hj}, f));
+  const double force = -f[0] * Vi;  // the spring pushes i to -x, away from j: K (r_c - d) > 0
+  EXPECT_NEAR(-(energy(d + h) - energy(d - h)) / (2 * h), force, 1e-8 * force);
+  EXPECT_EQ(energy(kLaw.contactRadius), 0.0);
+}
+
 }  // namespace
 }  // namespace pf
