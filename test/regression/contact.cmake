@@ -34,3 +34,11 @@ set_tests_properties(contact_input_errors PROPERTIES LABELS "regression")
 periforge_run(contact_rod_on_rod_np2 ${PROJECT_SOURCE_DIR}/examples/contact/rod_on_rod_coarse.xml 2)
 periforge_check(contact_rod_on_rod_check "contact_rod_on_rod_np2;taylor_coarse_np2"
   ${PY} ${REG}/contact/check_rod_on_rod.py ${CONTACT_BIN}/contact_rod_on_rod_np2 ${CONTACT_BIN}/taylor_coarse_np2)
+
+# A block sliding on a held plate with Coulomb friction (examples/contact/sliding_block.xml): its deceleration is
+# mu times its load per mass within 1 % (check_sliding_block.py), at np 1 and 2.
+foreach(np 1 2)
+  periforge_run(contact_sliding_block_np${np} ${PROJECT_SOURCE_DIR}/examples/contact/sliding_block.xml ${np})
+  periforge_check(contact_sliding_block_np${np}_check contact_sliding_block_np${np}
+    ${PY} ${REG}/contact/check_sliding_block.py ${CONTACT_BIN}/contact_sliding_block_np${np})
+endforeach()
