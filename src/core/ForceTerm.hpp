@@ -22,6 +22,8 @@ class ForceTerm {
   // force(), which the caller sums over the ranks (contact: the force each block takes from each other block).
   virtual std::vector<std::string> historyNames() const { return {}; }
   virtual std::vector<double> historyShares() const { return {}; }
+  // Collective: its deterministic work counts so far over all ranks, one line for the run's summary.
+  virtual std::string workSummary() const { return ""; }
 };
 
 }  // namespace pf

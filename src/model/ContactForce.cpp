@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "discretization/NeighborSearch.hpp"
 
@@ -12,11 +13,17 @@ ContactForce::ContactForce(const DistributedLayout& layout, std::vector<double> 
     : layout_(layout), volume_(std::move(volume)), block_(std::move(block)),
       setup_(std::move(setup)), ghosts_(layout) {
   for (int b : block_) horizon_.push_back(setup_.horizonOf.at(b));
+  for (const auto& kv : setup_.horizonOf) lawTableSide_ = std::max<std::size_t>(lawTableSide_, kv.first + 1);
+  lawTable_.assign(lawTableSide_ * lawTableSide_, -1);
+  for (const auto& [pair, law] : setup_.lawOf)
+    lawTable_[pair.first * lawTableSide_ + pair.second] = lawTable_[pair.second * lawTableSide_ + pair.first] = law;
 }
 
+// The law table is dense over block ids (a deck's ids are small): this is asked for every candidate of a search.
 int ContactForce::lawBetween(int blockA, int blockB) const {
-  const auto it = setup_.lawOf.find({std::min(blockA, blockB), std::max(blockA, blockB)});
-  return it == setup_.lawOf.end() ? -1 : it->second;
+  const int n = static_cast<int>(lawTableSide_);
+  if (blockA < 0 || blockB < 0 || blockA >= n || blockB >= n) return -1;
+  return lawTable_[static_cast<std::size_t>(blockA) * lawTableSide_ + blockB];
 }
 
 void ContactForce::search(const std::vector<double>& y) {
@@ -50,33 +57,37 @@ void ContactForce::search(const std::vector<double>& y) {
   partners_.clear();
   partnerLaw_.clear();
   std::vector<std::pair<int, int>> row;  // (gid, contact-point index) of one point's partners
-  std::vector<int> bonded;               // the gids of its bond family, sorted
   for (int a = 0, i = 0; i < numOwned; ++i) {
     offsets_[i] = static_cast<int>(partners_.size());
     if (!active[i]) continue;
-    bonded.clear();
-    for (int k = fam.offsets[i]; k < fam.offsets[i + 1]; ++k) bonded.push_back(layout_.gids()[fam.neighbors[k]]);
-    std::sort(bonded.begin(), bonded.end());
     row.clear();
     for (int k = near.offsets[a]; k < near.offsets[a + 1]; ++k) {
       const int c = near.neighbors[k];
       const bool owned = c < numActive;
-      const int gid = owned ? mine.gid[c] : g.gid[c - numActive];
-      const int blk = owned ? mine.block[c] : g.block[c - numActive];
-      if (lawBetween(block_[i], blk) < 0 || std::binary_search(bonded.begin(), bonded.end(), gid)) continue;
-      row.push_back({gid, owned ? activeOwned[c] : numOwned + (c - numActive)});
+      if (lawBetween(block_[i], owned ? mine.block[c] : g.block[c - numActive]) < 0) continue;
+      row.push_back({owned ? mine.gid[c] : g.gid[c - numActive], owned ? activeOwned[c] : numOwned + (c - numActive)});
     }
+    ++a;
+    if (row.empty()) continue;
+    // Its own bond family is no partner (Peridigm's rule): only the few candidates left are looked up in it.
+    auto bonded = [&](int gid) {
+      for (int k = fam.offsets[i]; k < fam.offsets[i + 1]; ++k)
+        if (layout_.gids()[fam.neighbors[k]] == gid) return true;
+      return false;
+    };
+    row.erase(std::remove_if(row.begin(), row.end(), [&](const std::pair<int, int>& r) { return bonded(r.first); }),
+              row.end());
     std::sort(row.begin(), row.end());
     for (const auto& [gid, c] : row) {
       partners_.push_back(c);
       partnerLaw_.push_back(lawBetween(block_[i], c < numOwned ? block_[c] : g.block[c - numOwned]));
     }
-    ++a;
   }
   offsets_[numOwned] = static_cast<int>(partners_.size());
   ghostHorizon_.clear();
   for (int b : g.block) ghostHorizon_.push_back(setup_.horizonOf.at(b));
   searched_ = true;
+  ++searches_;
 }
 
 void ContactForce::force(long step, double t, const double* y, const double* v, double* f) {
@@ -97,7 +108,18 @@ void ContactForce::force(long step, double t, const double* y, const double* v, 
   std::fill(f, f + 3 * static_cast<std::size_t>(numOwned), 0.0);
   for (int i = 0; i < numOwned; ++i)
     for (int k = offsets_[i]; k < offsets_[i + 1]; ++k)
-      addShortRangeForce(setup_.laws[partnerLaw_[k]].law, mu_[partnerLaw_[k]], pairOf(i, k), &f[3 * i]);
+      contacts_ += addShortRangeForce(setup_.laws[partnerLaw_[k]].law, mu_[partnerLaw_[k]], pairOf(i, k), &f[3 * i]);
+  evaluations_ += static_cast<double>(partners_.size());
+}
+
+std::string ContactForce::workSummary() const {
+  const double local[4] = {searches_, static_cast<double>(partners_.size()), evaluations_, contacts_};
+  double all[4];
+  layout_.comm().sum(local, all, 4);
+  char line[200];
+  std::snprintf(line, sizeof line, "contact: %.0f searches, %.0f partner pairs at the last, %.0f pair evaluations, %.0f in contact",
+                local[0], all[1], all[2], all[3]);
+  return line;
 }
 
 ContactPair ContactForce::pairOf(int i, int k) const {

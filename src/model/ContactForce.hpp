@@ -44,6 +44,8 @@ class ContactForce : public ForceTerm {
   // Contact_Force_On_block_<a>_From_block_<b>_X, _Y, _Z (N) for each pair a < b of interacting blocks.
   std::vector<std::string> historyNames() const override;
   std::vector<double> historyShares() const override;
+  // "contact: S searches, P partner pairs at the last, E pair evaluations, C in contact" (over all ranks).
+  std::string workSummary() const override;
   // Partners found at the last search, over this rank's owned points (for the benchmark's counts).
   std::size_t numPartners() const { return partners_.size(); }
 
@@ -58,7 +60,10 @@ class ContactForce : public ForceTerm {
   std::vector<int> block_;          // per owned point
   ContactSetup setup_;
   MovingGhosts ghosts_;
+  std::size_t lawTableSide_ = 0;
+  std::vector<int> lawTable_;  // law of blocks (a, b) at a * side + b, -1 for none
   bool searched_ = false;
+  double searches_ = 0, evaluations_ = 0, contacts_ = 0;  // work counts on this rank (doubles: summed by the comm)
   std::vector<double> yPrevious_;  // owned positions at the last evaluation: the next search's, as Peridigm's
   // Per owned point (offsets: numOwned + 1): its partners as contact-point indices (< numOwned: an owned point,
   // else numOwned + a ghost), in gid order, and the law of each pair.

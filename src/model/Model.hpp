@@ -165,6 +165,7 @@ class Model {
   double termEnergy() const;
   std::vector<std::string> termHistoryNames() const;
   std::vector<double> termHistoryShares() const;
+  std::string termWorkSummary() const;  // collective: each term's ForceTerm::workSummary, joined
 
   // The nodal fields beside the displacement (model/FieldSet.hpp): addField declares one (its state joins
   // state()); every force evaluation first imposes its conditions of the evaluated time and ghosts it, and each

@@ -48,4 +48,10 @@ std::vector<double> Model::termHistoryShares() const {
   return shares;
 }
 
+std::string Model::termWorkSummary() const {
+  std::string all;
+  for (const std::unique_ptr<ForceTerm>& term : forceTerms_) all += (all.empty() ? "" : "; ") + term->workSummary();
+  return all;
+}
+
 }  // namespace pf

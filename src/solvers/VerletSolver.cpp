@@ -97,7 +97,7 @@ class TermForces {
   bool on() const { return !ft.empty(); }
   double operator[](std::size_t k) const { return ft.empty() ? 0.0 : ft[k]; }
   void evaluate(Model& model, long s, double t, const std::vector<double>& y, const std::vector<double>& v) {
-    atStep(CheckPoint{"Verlet", s, t}, [&] { model.termForce(s, t, y.data(), v.data(), ft.data()); });
+    timer.time([&] { atStep(CheckPoint{"Verlet", s, t}, [&] { model.termForce(s, t, y.data(), v.data(), ft.data()); }); });
   }
   // f + ft (the force Peridigm's last half kick uses at prescribed components), or f itself without terms.
   const std::vector<double>& plus(const std::vector<double>& f) {
@@ -107,6 +107,7 @@ class TermForces {
     return sum_;
   }
   std::vector<double> ft;  // 3 per owned node; empty without terms
+  ForceTimer timer;        // the terms' evaluations (contact: search, ghost updates and the law)
 
  private:
   std::vector<double> sum_;
@@ -286,6 +287,10 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
                 forceTime.wall, forceTime.cpu, std::chrono::duration<double>(Clock::now() - runStart).count(),
                 threadCpuSeconds() - runCpu0);
   if (root && heat) std::printf("Verlet: Temperature sub-steps %ld\n", heat->subStepsTaken());
+  if (terms.on()) {
+    const std::string work = model.termWorkSummary();  // collective
+    if (root) std::printf("Verlet: force terms %.3f s wall (rank 0): %s\n", terms.timer.wall, work.c_str());
+  }
 }
 
 }  // namespace pf
