@@ -42,3 +42,9 @@ foreach(np 1 2)
   periforge_check(contact_sliding_block_np${np}_check contact_sliding_block_np${np}
     ${PY} ${REG}/contact/check_sliding_block.py ${CONTACT_BIN}/contact_sliding_block_np${np})
 endforeach()
+
+# A steel sphere through a brittle plate (examples/contact/perforation.xml): contact keeps the sphere off the plate's
+# points and fragments, the sphere perforates and slows, total momentum is conserved (check_perforation.py).
+periforge_run(contact_perforation_np2 ${PROJECT_SOURCE_DIR}/examples/contact/perforation.xml 2)
+periforge_check(contact_perforation_check contact_perforation_np2
+  ${PY} ${REG}/contact/check_perforation.py ${CONTACT_BIN}/contact_perforation_np2)
