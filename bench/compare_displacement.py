@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Max |u_a - u_b| of two Exodus files of the same deck (points in global-id order), over all output steps, at the
-last one and at steps 20, 60, 100, against max |u|. Used for BENCHMARKS.md, "Consistent tangent of the J2 models".
+last one and at steps 20, 60, 100, against max |u|. Used for docs/benchmark-log.md, "Consistent tangent of the J2 models".
 usage: bench/compare_displacement.py A.e B.e"""
 import sys
 import numpy as np

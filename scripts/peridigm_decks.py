@@ -1,6 +1,6 @@
 """Peridigm-compatible variants of the benchmark kernel decks, and running Peridigm on them.
 
-Used by `scripts/bench --peridigm PATH` (BENCHMARKS.md, "Peridigm side by side") and
+Used by `scripts/bench --peridigm PATH` (docs/benchmark-log.md, "Peridigm side by side") and
 `scripts/peridigm_side_by_side` (docs/peridigm.md). Both codes then run the *same* deck file:
   - the initial velocity acts on the node set `All Node Set`, a file of all 1-based ids (Peridigm has no
     built-in set of every node; Periforge's kernel decks use its built-in `All`);

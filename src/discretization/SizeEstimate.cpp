@@ -239,7 +239,7 @@ MemoryModel memoryModel(const SizeEstimate& e) {
   // NOX adds what its peak depends on beyond points and bonds, taken at its worst: the whole GMRES basis
   // (201 vectors of 3 doubles per point at the default Krylov size 200, touched only as far as the solve
   // iterates) and the pair-stiffness matrix with its multigrid hierarchy (120 B per bond: 9 entries of 12 B,
-  // and the hierarchy's share; fitted with ML's, still an upper bound with MueLu's: BENCHMARKS.md, issue 20).
+  // and the hierarchy's share; fitted with ML's, still an upper bound with MueLu's: docs/benchmark-log.md, issue 20).
   // Measured runs use 0.46-1.0 of it, so it is an upper bound.
   const MemoryModel newton{60.1e6, 90.0, 667.0 + 201.0 * 3.0 * 8.0, 36.0 + 120.0};
   MemoryModel m = e.newtonKrylov ? newton : explicitSolvers;

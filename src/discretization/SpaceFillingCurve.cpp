@@ -8,7 +8,7 @@ namespace pf {
 // rotations and reflections from the coarsest level down, Gray-code the result, then interleave the
 // axes' bits. Unlike the Morton curve the Hilbert curve never jumps between distant cells, so the
 // neighbours of consecutive families share more of the cache: the hardening kernel on the 40^3 cube ran
-// 8-11 % faster in Hilbert order than in Morton order (BENCHMARKS.md, session 5).
+// 8-11 % faster in Hilbert order than in Morton order (docs/benchmark-log.md, session 5).
 std::uint64_t hilbertKey(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
   std::uint32_t X[3] = {x, y, z};
   const std::uint32_t top = 1u << (kHilbertBits - 1);

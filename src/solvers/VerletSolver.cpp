@@ -187,6 +187,20 @@ void VerletSolver::evaluate(Model& model, ExplicitFieldStep* heat, long step, do
   model.commit();  // an explicit step is complete once its force (and field) is evaluated
 }
 
+// The run's last lines: where the stepping time went, and the deterministic work counts. Collective (the force
+// terms sum their counts over the ranks).
+static void printRunSummary(const Model& model, bool root, const ForceTimer& forceTime, double wall, double cpu,
+                            const ExplicitFieldStep* heat, const TermForces& terms) {
+  if (root)
+    std::printf("Verlet: force evaluations %.3f s wall, %.3f s CPU (rank 0) of %.3f s wall, %.3f s CPU stepping\n",
+                forceTime.wall, forceTime.cpu, wall, cpu);
+  if (root && heat) std::printf("Verlet: Temperature sub-steps %ld\n", heat->subStepsTaken());
+  if (terms.on()) {
+    const std::string work = model.termWorkSummary();
+    if (root) std::printf("Verlet: force terms %.3f s wall (rank 0): %s\n", terms.timer.wall, work.c_str());
+  }
+}
+
 std::unique_ptr<ExplicitFieldStep> VerletSolver::heatStep(Model& model) const {
   if (!advances("Temperature")) return nullptr;
   model.fields().setSolved("Temperature");
@@ -282,15 +296,8 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
       std::printf("step %ld/%ld  t = %.6g  wall %.2f s\n", s, steps, t,
                   std::chrono::duration<double>(Clock::now() - runStart).count()), std::fflush(stdout);
   }
-  if (root)
-    std::printf("Verlet: force evaluations %.3f s wall, %.3f s CPU (rank 0) of %.3f s wall, %.3f s CPU stepping\n",
-                forceTime.wall, forceTime.cpu, std::chrono::duration<double>(Clock::now() - runStart).count(),
-                threadCpuSeconds() - runCpu0);
-  if (root && heat) std::printf("Verlet: Temperature sub-steps %ld\n", heat->subStepsTaken());
-  if (terms.on()) {
-    const std::string work = model.termWorkSummary();  // collective
-    if (root) std::printf("Verlet: force terms %.3f s wall (rank 0): %s\n", terms.timer.wall, work.c_str());
-  }
+  printRunSummary(model, root, forceTime, std::chrono::duration<double>(Clock::now() - runStart).count(),
+                  threadCpuSeconds() - runCpu0, heat.get(), terms);
 }
 
 }  // namespace pf

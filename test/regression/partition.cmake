@@ -1,4 +1,4 @@
-# The partition model (scripts/comm_model, BENCHMARKS.md "Ghost points and communication"): periforge's start-up
+# The partition model (scripts/comm_model, docs/benchmark-log.md "Ghost points and communication"): periforge's start-up
 # line (owned and ghost points per rank, ranks a rank receives from) equals the model's exact lattice count for a
 # 20^3 cube, delta = 3.015 dx, at np 2, 4 and 8, so the model's np 64 and 1024 figures rest on the same geometry.
 # Exact equality: both count lattice points.
