@@ -48,3 +48,12 @@ endforeach()
 periforge_run(contact_perforation_np2 ${PROJECT_SOURCE_DIR}/examples/contact/perforation.xml 2)
 periforge_check(contact_perforation_check contact_perforation_np2
   ${PY} ${REG}/contact/check_perforation.py ${CONTACT_BIN}/contact_perforation_np2)
+
+# Hertz: a rigid sphere driven into an elastic block (examples/contact/hertz.xml; its 36 000-point mesh is written
+# into the run directory by make_hertz --setup, not stored): force against indentation within 5 % of Hertz's over
+# the loading phase (check_hertz.py). About 30 s at np 2.
+set(HERTZ_DIR ${CONTACT_BIN}/contact_hertz_np2)
+periforge_run(contact_hertz_np2 ${HERTZ_DIR}/hertz.xml 2
+  LAUNCHER ${PY} ${PROJECT_SOURCE_DIR}/examples/contact/make_hertz --setup ${PROJECT_SOURCE_DIR}/examples/contact/hertz.xml
+           ${HERTZ_DIR})
+periforge_check(contact_hertz_check contact_hertz_np2 ${PY} ${REG}/contact/check_hertz.py ${HERTZ_DIR})
