@@ -68,8 +68,7 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
     if (d && (d->criticalStretch > 0.0 || d->stretchOfTime) && !materialOf(g.material)->breaksBonds())
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model' = '" + g.damageModel + "': material '" +
                        g.material + "' (" + deck.material(g.material).entry->model +
-                       ") does not break bonds; bond damage works with Elastic, Elastic Plastic, Elastic Plastic "
-                       "Hardening and Microelastic");
+                       ") does not break bonds (docs/materials.md, \"Bond damage\", lists the models that do)");
     if (d && d->thermalExpansion >= 0.0) {
       const ParameterValues& mv = deck.material(g.material).values;
       const double alpha = mv.has("Thermal Expansion Coefficient") ? mv.get("Thermal Expansion Coefficient") : 0.0;
