@@ -86,7 +86,9 @@ Teuchos::RCP<OP> buildIfpack2(const Teuchos::RCP<Matrix>& A, Teuchos::ParameterL
       inner.setEntry(name == "fact: level-of-fill" ? "fact: iluk level-of-fill" : name, ifpack.entry(e));
     }
   }
-  const int overlap = linearSolver.get<int>("Overlap", 0);
+  // AztecOO's overlap is a level; Peridigm's decks also give it as a bool (false: none).
+  const int overlap = linearSolver.isType<bool>("Overlap") ? (linearSolver.get<bool>("Overlap") ? 1 : 0)
+                                                            : linearSolver.get<int>("Overlap", 0);
   Ifpack2::Factory factory;
   Teuchos::RCP<Ifpack2::Preconditioner<double>> prec;
   if (overlap > 0) {
@@ -148,17 +150,34 @@ Teuchos::RCP<const Thyra::VectorSpaceBase<double>> KrylovSolver::space() const {
   return Thyra::createVectorSpace<double>(impl_->map);
 }
 
+void KrylovSolver::ensurePreconditioner(Teuchos::ParameterList& linearSolver) {
+  Impl& s = *impl_;
+  if (s.precBuilt) return;
+  // The deck's choice was validated when it was read (checkLinearSolver).
+  const LinearSolverChoice choice = linearSolverChoice(linearSolver, s.where);
+  if (choice.preconditioner == LinearSolverChoice::Preconditioner::MueLu)
+    s.prec = buildMueLu(s.matrix, linearSolver);
+  else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)
+    s.prec = buildIfpack2(s.matrix, linearSolver, choice.ifpack2Type);
+  s.precBuilt = true;
+}
+
+void KrylovSolver::applyPreconditioner(const double* in, double* out, Teuchos::ParameterList& linearSolver) {
+  ensurePreconditioner(linearSolver);
+  const Impl& s = *impl_;
+  const std::size_t n = s.map->getNodeNumElements();
+  if (s.prec.is_null()) {
+    std::copy(in, in + n, out);
+    return;
+  }
+  Teuchos::RCP<MV> X = wrap(s.map, in), Y = wrap(s.map, out);
+  s.prec->apply(*X, *Y);
+}
+
 KrylovOutcome KrylovSolver::solve(const TangentAction& J, const double* rhs, double* dx,
                                   Teuchos::ParameterList& linearSolver) {
   Impl& s = *impl_;
-  if (!s.precBuilt) {  // the deck's choice was validated when it was read (checkLinearSolver)
-    const LinearSolverChoice choice = linearSolverChoice(linearSolver, s.where);
-    if (choice.preconditioner == LinearSolverChoice::Preconditioner::MueLu)
-      s.prec = buildMueLu(s.matrix, linearSolver);
-    else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)
-      s.prec = buildIfpack2(s.matrix, linearSolver, choice.ifpack2Type);
-    s.precBuilt = true;
-  }
+  ensurePreconditioner(linearSolver);
   const int maxIterations = linearSolver.get<int>("Max Iterations", 800);
   const int krylov = std::max(1, std::min(linearSolver.get<int>("Size of Krylov Subspace", 200), maxIterations));
   auto params = Teuchos::rcp(new Teuchos::ParameterList);

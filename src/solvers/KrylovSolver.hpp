@@ -37,9 +37,13 @@ class KrylovSolver {
   // Solves J dx = rhs from dx = 0 by GMRES with the list's "Tolerance" (relative to |rhs|), "Max Iterations",
   // "Size of Krylov Subspace" and "Preconditioner" (linearSolverChoice, NoxParameters.hpp). Collective.
   KrylovOutcome solve(const TangentAction& J, const double* rhs, double* dx, Teuchos::ParameterList& linearSolver);
+  // out = M⁻¹ in with the preconditioner of the solves (built from the list's choice if no solve has built it yet;
+  // the identity for "None"). NOX's preconditioned nonlinear CG direction asks for it. Collective.
+  void applyPreconditioner(const double* in, double* out, Teuchos::ParameterList& linearSolver);
 
  private:
   struct Impl;
+  void ensurePreconditioner(Teuchos::ParameterList& linearSolver);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -137,6 +137,17 @@ NOX::Abstract::Group::ReturnType NoxStepGroup::computeNewton(Teuchos::ParameterL
   return k.converged ? Ok : NotConverged;
 }
 
+NOX::Abstract::Group::ReturnType NoxStepGroup::applyRightPreconditioning(bool useTranspose,
+                                                                       Teuchos::ParameterList& params,
+                                                                       const NOX::Abstract::Vector& input,
+                                                                       NOX::Abstract::Vector& result) const {
+  if (useTranspose) return NotDefined;  // the pair-stiffness preconditioners are symmetric, but NOX's NLCG never asks
+  Teuchos::ArrayRCP<const double> in = local(input);
+  Teuchos::ArrayRCP<double> out = local(result);
+  shared_.krylov->applyPreconditioner(in.getRawPtr(), out.getRawPtr(), params);
+  return Ok;
+}
+
 const NOX::Abstract::Vector& NoxStepGroup::getGradient() const {
   throw std::logic_error("NoxStepGroup: no gradient (the line search uses J d instead)");
 }

@@ -35,6 +35,9 @@ class NoxStepGroup : public NOX::Abstract::Group {
   ReturnType computeJacobian() override;
   ReturnType computeNewton(Teuchos::ParameterList& params) override;
   ReturnType applyJacobian(const NOX::Abstract::Vector& input, NOX::Abstract::Vector& result) const override;
+  // The Krylov solver's preconditioner (NOX's preconditioned NonlinearCG direction); no transpose.
+  ReturnType applyRightPreconditioning(bool useTranspose, Teuchos::ParameterList& params,
+                                       const NOX::Abstract::Vector& input, NOX::Abstract::Vector& result) const override;
 
   bool isF() const override { return isF_; }
   bool isJacobian() const override { return isJacobian_; }

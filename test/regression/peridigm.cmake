@@ -153,6 +153,7 @@ set(peridigm_suite_cases
   "DeformationGradient__NoLoad DeformationGradient_NoLoad.xml DeformationGradient_NoLoad DeformationGradient.comp"
   "Body_Force__Explicit Body_Force_Explicit.xml Body_Force_Explicit Body_Force.comp"
   "Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.xml Compression_QS_Explicit_3x2x2 Compression_QS_Explicit_3x2x2.comp"
+  "Compression_NLCGQS_3x2x2 Compression_NLCGQS_3x2x2.xml Compression_NLCGQS_3x2x2 Compression_NLCGQS_3x2x2.comp"
   "ThermalExpansionBondFailure ThermalExpansionBondFailure.xml ThermalExpansionBondFailure ThermalExpansionBondFailure.comp"
   "ElasticBondBased__ElasticBondBased3D ElasticBondBased3D.yaml ElasticBondBased3D ElasticBondBased.comp"
   "ElasticBondBased__ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.yaml ElasticBondBased2DPlaneStrain ElasticBondBased2DPlaneStrain.comp"
