@@ -141,6 +141,7 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
   // Checks that need the model come before any output file is opened.
   std::vector<double> u(model.numDofs(), 0.0), v(model.numDofs(), 0.0);
   initialState(problem, deck.solvers.front().times.front(), u, v);
+  model.setPrescribedBaseline(deck.solvers.front().times.front(), u.data());  // before a restart replaces u
   CheckpointData restart;
   std::unique_ptr<RestartPoint> from;
   if (!restartFile.empty()) from = std::make_unique<RestartPoint>(restartFrom(restartFile, deck, problem, u, v, restart));

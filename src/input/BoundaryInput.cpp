@@ -91,9 +91,10 @@ std::vector<ParameterSpec> conditionSpecs() {
                               "`Surface Correction` = `NDO Band`. `false`: a dead load on the reference area (-p N)")
               .byDefault("false"),
           S::flag("Apply At Initial Time",
-                  "`Prescribed Displacement` only: `false` (Peridigm's) leaves the initial state as it is (zero, or "
-                  "the `Initial Displacement`) and applies the value from the first step on, as Peridigm's "
-                  "increments do; `true` sets it at the initial time too")
+                  "`Prescribed Displacement` only: `false` (Peridigm's increments) leaves the initial state u0 as it "
+                  "is (zero, or the `Initial Displacement`) and from the first step on gives u0 + f(t) - f(t0) "
+                  "while f(t) differs from f(t0), f(t) where it does not (Peridigm's DirichletIncrementBC); "
+                  "`true` (Periforge's) sets f(t) at every time, the initial one included")
               .byDefault("false"),
           S::real("Heat Transfer Coefficient", "`Convection` only: h [W/(m^2 K)] of the heat flow h (T_amb - T) "
                                                "into the surface").positive(),

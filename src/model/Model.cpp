@@ -344,8 +344,30 @@ void Model::enforceRigidWalls(double dt, double* u, double* v, const double* a) 
 void Model::applyPrescribed(double t, double* u, bool initialState) const {
   if (!clockStarted_) startTime_ = t, clockStarted_ = true;
   time_ = t;
+  for (std::size_t i = 0; i < prescribedLoads_.size(); ++i) {
+    if (initialState && !prescribedAtStart_[i]) continue;
+    if (prescribedAtStart_[i] || prescribedStart_.empty()) {
+      evaluate(prescribedLoads_[i], x_, t, [u](int k, double v) { u[k] = v; });
+      continue;
+    }
+    const std::vector<double>& f0 = prescribedStart_[i];
+    const std::vector<double>& offset = prescribedOffset_[i];
+    std::size_t j = 0;  // the load's nodes in order, as evaluate visits them
+    evaluate(prescribedLoads_[i], x_, t, [&](int k, double v) {
+      u[k] = v != f0[j] ? v + offset[j] : v;
+      ++j;
+    });
+  }
+}
+
+void Model::setPrescribedBaseline(double t0, const double* u0) {
+  prescribedStart_.assign(prescribedLoads_.size(), {});
+  prescribedOffset_.assign(prescribedLoads_.size(), {});
   for (std::size_t i = 0; i < prescribedLoads_.size(); ++i)
-    if (!initialState || prescribedAtStart_[i]) evaluate(prescribedLoads_[i], x_, t, [u](int k, double v) { u[k] = v; });
+    evaluate(prescribedLoads_[i], x_, t0, [&](int k, double v) {
+      prescribedStart_[i].push_back(v);
+      prescribedOffset_[i].push_back(u0[k] - v);
+    });
 }
 
 void Model::updateFollowerLoads() {

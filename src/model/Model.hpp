@@ -132,6 +132,11 @@ class Model {
   // initialState: the solver's start (not a resumed one), where only the conditions with atInitialTime are set:
   // Peridigm applies a prescribed displacement as increments from the first step on (docs/input.md).
   void applyPrescribed(double t, double* u, bool initialState = false) const;
+  // Peridigm's increments for the Prescribed Displacements without atInitialTime (DirichletIncrementBC): from the
+  // start state u0 at the run's first time t0 (initial conditions; a restart recomputes them from the deck), the
+  // value at t is u0 + f(t) - f(t0) while f(t) differs from f(t0), else f(t) (Peridigm sets the value where an
+  // increment is zero). Without this call (one-point drivers, tests) the value is f(t).
+  void setPrescribedBaseline(double t0, const double* u0);
   void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
@@ -254,6 +259,8 @@ class Model {
   void updateFollowerLoads();
   std::vector<char> prescribed_;
   std::vector<char> prescribedAtStart_;  // per prescribedLoads_ entry: also applied in the initial state
+  // Per prescribedLoads_ entry, per node of the load: f(t0) and u0 - f(t0) (setPrescribedBaseline); empty: none.
+  std::vector<std::vector<double>> prescribedStart_, prescribedOffset_;
   std::vector<RigidWall> walls_;
   std::vector<std::unique_ptr<ForceTerm>> forceTerms_;
   std::map<std::string, std::vector<double>> termOutputs_;  // per term's output name, 3 per owned node
