@@ -18,12 +18,14 @@ if os.path.realpath(sys.executable) != "/usr/bin/python3" and os.path.exists("/u
 import numpy as np  # noqa: E402
 import netCDF4  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "compat"))
+import exodus_fields  # noqa: E402
+
 L0, RHO, V = 31.75e-3, 2700.0, 200.0  # V: each bar's speed, the wall run's
 
 
 def nodal(ds, name, step):
-    names = [str(n) for n in netCDF4.chartostring(ds["name_nod_var"][:])]
-    return np.asarray(ds["vals_nod_var%d" % (names.index(name) + 1)][step, :], dtype=float)
+    return np.asarray(exodus_fields.nodal(ds, name)[step], dtype=float)
 
 
 def cloud(path):
@@ -38,8 +40,8 @@ def length_ratio(x, uz, bar):
 
 def globals_of(path):
     ds = netCDF4.Dataset(path)
-    names = [str(n) for n in netCDF4.chartostring(ds["name_glo_var"][:])]
-    return {n: np.asarray(ds["vals_glo_var"][:, k], dtype=float) for k, n in enumerate(names)}
+    return {n: np.asarray(exodus_fields.global_variable(ds, n), dtype=float)
+            for n in exodus_fields.variable_names(ds, "name_glo_var")}
 
 
 def main():
