@@ -9,6 +9,7 @@
 
 #include "ExplicitFieldStep.hpp"
 #include "FiniteCheck.hpp"
+#include "Progress.hpp"
 #include "PeridigmTimeStep.hpp"
 #include "VerletPeridigm.hpp"
 #include "core/InputError.hpp"
@@ -207,6 +208,23 @@ long VerletSolver::stepCount(double duration, double& dt, const SolverResume* re
   return steps;
 }
 
+namespace {
+
+// The run's closing lines: where the stepping's wall and CPU time went, the heat sub-steps, the force terms' work.
+void printRunSummary(Model& model, bool root, const ForceTimer& force, double stepWall, double stepCpu,
+                     const ExplicitFieldStep* heat, TermForces& terms) {
+  if (root)
+    std::printf("Verlet: force evaluations %.3f s wall, %.3f s CPU (rank 0) of %.3f s wall, %.3f s CPU stepping\n",
+                force.wall, force.cpu, stepWall, stepCpu);
+  if (root && heat) std::printf("Verlet: Temperature sub-steps %ld\n", heat->subStepsTaken());
+  if (terms.on()) {
+    const std::string work = model.termWorkSummary();  // collective
+    if (root) std::printf("Verlet: force terms %.3f s wall (rank 0): %s\n", terms.timer.wall, work.c_str());
+  }
+}
+
+}  // namespace
+
 void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                        const std::vector<double>& times, StepObserver& observer) {
   const SolverResume* resume = takeResume();
@@ -250,7 +268,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   const long every = std::max(1L, steps / 20);
   ForceTimer forceTime;
   const double runCpu0 = threadCpuSeconds();
-  auto runStart = Clock::now();
+  const ProgressClock progress(resume ? resume->step + 1 : 1, steps);  // its clock: the stepping's wall time
   for (long s = resume ? resume->step + 1 : 1; s <= steps; ++s) {
     auto start = Clock::now();
     const double t = (s == steps && landsOnEnd()) ? t1 : t0 + s * dt;
@@ -279,18 +297,10 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall, &carry}, u, v, f);
     if (root && (s % every == 0 || s == steps))
-      std::printf("step %ld/%ld  t = %.6g  wall %.2f s\n", s, steps, t,
-                  std::chrono::duration<double>(Clock::now() - runStart).count()), std::fflush(stdout);
+      std::printf("step %ld/%ld  t = %.6g  wall %.2f s%s\n", s, steps, t, progress.elapsed(),
+                  progress.leftAfter(s).c_str()), std::fflush(stdout);
   }
-  if (root)
-    std::printf("Verlet: force evaluations %.3f s wall, %.3f s CPU (rank 0) of %.3f s wall, %.3f s CPU stepping\n",
-                forceTime.wall, forceTime.cpu, std::chrono::duration<double>(Clock::now() - runStart).count(),
-                threadCpuSeconds() - runCpu0);
-  if (root && heat) std::printf("Verlet: Temperature sub-steps %ld\n", heat->subStepsTaken());
-  if (terms.on()) {
-    const std::string work = model.termWorkSummary();  // collective
-    if (root) std::printf("Verlet: force terms %.3f s wall (rank 0): %s\n", terms.timer.wall, work.c_str());
-  }
+  printRunSummary(model, root, forceTime, progress.elapsed(), threadCpuSeconds() - runCpu0, heat.get(), terms);
 }
 
 }  // namespace pf
