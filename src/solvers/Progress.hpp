@@ -19,7 +19,11 @@ class ProgressClock {
   // Seconds since the clock started.
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
   // The estimate once `step` is done.
-  std::string leftAfter(long step) const { return timeLeftText(elapsed(), step - first_ + 1, last_ - first_ + 1); }
+  std::string leftAfter(long step) const { return leftAfter(step, elapsed()); }
+  // The same after `seconds` of this run (tests).
+  std::string leftAfter(long step, double seconds) const {
+    return timeLeftText(seconds, step - first_ + 1, last_ - first_ + 1);
+  }
 
  private:
   long first_, last_;

@@ -20,11 +20,13 @@ TEST(ProgressTimeLeft, TheLastStepAndNoStepsLeaveNothing) {
   EXPECT_EQ(timeLeftText(5.0, 0, 10), "  left 0 s");  // no pace yet: no made-up estimate
 }
 
-// After a restart the clock counts only this run's steps: 2 s for steps 51..60 of 100 leaves 8 s, not 2 x 40 / 60.
+// After a restart the clock counts only this run's steps: 2 s for steps 51..60 of 100 leaves 8 s (40 x 2 / 10),
+// not the 1 s that counting the first run's 50 steps as done in no time would give (40 x 2 / 60).
 TEST(ProgressTimeLeft, ARestartedRunCountsItsOwnSteps) {
   const ProgressClock clock(51, 100);
-  EXPECT_EQ(clock.leftAfter(100), "  left 0 s");
-  EXPECT_EQ(timeLeftText(2.0, 60 - 51 + 1, 100 - 51 + 1), "  left ~8 s");
+  EXPECT_EQ(clock.leftAfter(60, 2.0), "  left ~8 s");
+  EXPECT_EQ(clock.leftAfter(100, 9.0), "  left 0 s");
+  EXPECT_EQ(ProgressClock(1, 100).leftAfter(10, 2.0), "  left ~18 s");
 }
 
 }  // namespace pf
