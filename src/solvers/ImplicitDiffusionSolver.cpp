@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "Progress.hpp"
 #include "ScalarKrylov.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
@@ -152,6 +153,7 @@ void ImplicitDiffusionSolver::run(Model& model, std::vector<double>& u, std::vec
     model.updateFields();  // the start: initial and prescribed temperatures of t0, Flux_Divergence 0 (Peridigm's)
     report(0, times.front(), 0, 0.0, 0.0, 0.0);
   }
+  const ProgressClock progress(static_cast<long>(k), static_cast<long>(times.size()) - 1);
   for (; k < times.size(); ++k) {
     const auto clock = std::chrono::steady_clock::now();
     const double t = times[k];
@@ -164,8 +166,8 @@ void ImplicitDiffusionSolver::run(Model& model, std::vector<double>& u, std::vec
     model.commit();
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - clock).count();
     if (model.layout().rank() == 0)
-      std::printf("load step %4zu/%zu  t = %-10g Newton iterations %3d  residual %.3e (tol %.3e)  wall %.2f s\n", k,
-                  times.size() - 1, t, iterations, residual, tol, wall);
+      std::printf("load step %4zu/%zu  t = %-10g Newton iterations %3d  residual %.3e (tol %.3e)  wall %.2f s%s\n", k,
+                  times.size() - 1, t, iterations, residual, tol, wall, progress.leftAfter(static_cast<long>(k)).c_str());
     report(static_cast<int>(k), t, iterations, residual, tol, wall);
   }
 }

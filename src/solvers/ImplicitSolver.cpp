@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "FiniteCheck.hpp"
+#include "Progress.hpp"
 #include "VerletSolver.hpp"
 #include "core/InputError.hpp"
 #include "core/Log.hpp"
@@ -184,7 +185,9 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
     std::printf("Implicit: Newmark beta = %g, gamma = %g, dt = %.6g s, %ld steps\n", opt_.beta, opt_.gamma, dt, steps);
 
   const double scaled = opt_.beta * dt * dt;  // Peridigm's residual = scaled x force-density residual
-  for (long s = resume ? resume->step + 1 : 1; s <= steps; ++s) {
+  const long firstStep = resume ? resume->step + 1 : 1;
+  const ProgressClock progress(firstStep, steps);
+  for (long s = firstStep; s <= steps; ++s) {
     const auto start = Clock::now();
     const double t = t0 + s * dt;
     model.requireFiniteLoads(t);
@@ -207,8 +210,8 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     if (root) {
       std::printf("time step %4ld/%ld  t = %-12.6g Newton iterations %2d (linear %4d)  residual %.3e (tol %.3e)  "
-                  "wall %.2f s\n", s, steps, t, o.iterations, o.linearIterations, scaled * o.residualDensity,
-                  opt_.absoluteTolerance, wall);
+                  "wall %.2f s%s\n", s, steps, t, o.iterations, o.linearIterations, scaled * o.residualDensity,
+                  opt_.absoluteTolerance, wall, progress.leftAfter(s).c_str());
       std::fflush(stdout);
     }
     observer.onStep(StepReport{static_cast<int>(s), t, o.iterations, scaled * o.residualDensity,

@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "FiniteCheck.hpp"
+#include "Progress.hpp"
 #include "model/Model.hpp"
 #include "Solver.hpp"
 
@@ -72,7 +73,9 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     requireFiniteState(model, CheckPoint{"quasi-static", 0, t0}, u, v, f, finiteProbe(u) + finiteProbe(f));
     observer.onStep(StepReport{0, t0, 0, 0.0, 0.0, 0.0, &carry}, u, v, f);
   }
-  for (int step = resume ? static_cast<int>(resume->step) + 1 : 1; step <= steps; ++step) {
+  const int firstStep = resume ? static_cast<int>(resume->step) + 1 : 1;
+  const ProgressClock progress(firstStep, steps);
+  for (int step = firstStep; step <= steps; ++step) {
     const auto start = Clock::now();
     const double tA = times[step - 1], tB = times[step], dt = tB - tA;
     // A condition that is not finite at the step's end fails now, naming its expression, rather than
@@ -91,15 +94,16 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     requireFiniteState(model, CheckPoint{"quasi-static", step, tB}, u, v, f, probe);
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     if (root) {
+      const std::string left = progress.leftAfter(step);
       if (s.linearIterations >= 0)
-        std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d (linear %5d)  residual %.3e (tol %.3e)  wall %.2f s\n",
-                    step, steps, tB, s.iterations, s.linearIterations, s.residual, s.tolerance, wall);
+        std::printf("load step %4d/%d  t = %-12.6g Newton iterations %3d (linear %5d)  residual %.3e (tol %.3e)  wall %.2f s%s\n",
+                    step, steps, tB, s.iterations, s.linearIterations, s.residual, s.tolerance, wall, left.c_str());
       else if (s.rounds >= 0)  // iterations: the total over the step's loading-balance rounds
-        std::printf("load step %4d/%d  t = %-12.6g iterations %7d  LBC rounds %2d  residual %.3e (tol %.3e)  wall %.2f s\n",
-                    step, steps, tB, s.iterations, s.rounds, s.residual, s.tolerance, wall);
+        std::printf("load step %4d/%d  t = %-12.6g iterations %7d  LBC rounds %2d  residual %.3e (tol %.3e)  wall %.2f s%s\n",
+                    step, steps, tB, s.iterations, s.rounds, s.residual, s.tolerance, wall, left.c_str());
       else
-        std::printf("load step %4d/%d  t = %-12.6g iterations %7d  residual %.3e (tol %.3e)  wall %.2f s\n", step, steps,
-                    tB, s.iterations, s.residual, s.tolerance, wall);
+        std::printf("load step %4d/%d  t = %-12.6g iterations %7d  residual %.3e (tol %.3e)  wall %.2f s%s\n", step,
+                    steps, tB, s.iterations, s.residual, s.tolerance, wall, left.c_str());
       std::fflush(stdout);
     }
     observer.onStep(StepReport{step, tB, s.iterations, s.residual, s.tolerance, wall, &carry}, u, v, f);

@@ -9,6 +9,7 @@
 
 #include "ExplicitFieldStep.hpp"
 #include "FiniteCheck.hpp"
+#include "Progress.hpp"
 #include "PeridigmTimeStep.hpp"
 #include "VerletPeridigm.hpp"
 #include "core/InputError.hpp"
@@ -264,7 +265,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   const long every = std::max(1L, steps / 20);
   ForceTimer forceTime;
   const double runCpu0 = threadCpuSeconds();
-  auto runStart = Clock::now();
+  const ProgressClock progress(resume ? resume->step + 1 : 1, steps);  // its clock: the stepping's wall time
   for (long s = resume ? resume->step + 1 : 1; s <= steps; ++s) {
     auto start = Clock::now();
     const double t = (s == steps && landsOnEnd()) ? t1 : t0 + s * dt;
@@ -293,11 +294,10 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     observer.onStep(StepReport{static_cast<int>(s), t, 0, 0.0, 0.0, wall, &carry}, u, v, f);
     if (root && (s % every == 0 || s == steps))
-      std::printf("step %ld/%ld  t = %.6g  wall %.2f s\n", s, steps, t,
-                  std::chrono::duration<double>(Clock::now() - runStart).count()), std::fflush(stdout);
+      std::printf("step %ld/%ld  t = %.6g  wall %.2f s%s\n", s, steps, t, progress.elapsed(),
+                  progress.leftAfter(s).c_str()), std::fflush(stdout);
   }
-  printRunSummary(model, root, forceTime, std::chrono::duration<double>(Clock::now() - runStart).count(),
-                  threadCpuSeconds() - runCpu0, heat.get(), terms);
+  printRunSummary(model, root, forceTime, progress.elapsed(), threadCpuSeconds() - runCpu0, heat.get(), terms);
 }
 
 }  // namespace pf
