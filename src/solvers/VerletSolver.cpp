@@ -234,6 +234,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.bodyForce(resume->time, b.data());
   } else {
     model.applyPrescribed(t0, u.data(), true);
+    model.setVelocity(v.data());  // Peridigm's velocity at NP1, read by its correspondence rate (FamilyView::velocity)
     verletPositions(model, u, u, v, 0.0, y);
     evaluate(model, heat.get(), 0, t0, 0.0, y, f);
     if (terms.on()) terms.evaluate(model, 0, t0, y, v);
@@ -263,6 +264,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     model.applyPrescribed(t, u.data());
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) * rate;
+    model.setVelocity(v.data());  // the half-step velocity with the conditions' rate: Peridigm's at the evaluation
     verletPositions(model, uPrev, u, v, dt, y);
     forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, y, f); });
     if (terms.on()) terms.evaluate(model, s, t, y, v);
@@ -286,6 +288,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
                 forceTime.wall, forceTime.cpu, std::chrono::duration<double>(Clock::now() - runStart).count(),
                 threadCpuSeconds() - runCpu0);
   if (root && heat) std::printf("Verlet: Temperature sub-steps %ld\n", heat->subStepsTaken());
+  model.setVelocity(nullptr);  // a later solver's evaluations have no velocities
 }
 
 }  // namespace pf
