@@ -75,7 +75,7 @@ Mat3 spinIncrement(const Mat3& V, const Mat3& D, const Mat3& W) {
   return Mat3{0, -om[2], om[1], om[2], 0, -om[0], -om[1], om[0], 0};
 }
 
-// L dt = (F - F_n) G^-1 for G = F_mid (Periforge) or F (Peridigm).
+// L dt = (F - F_n) G^-1 for G = F_mid (Periforge) or F (Peridigm, with F - F_n its Fdot dt).
 Mat3 velocityGradientIncrement(const Mat3& Fn, const Mat3& F, const Mat3& G) {
   Mat3 Ginv;
   if (!(inverse(G, Ginv) > 0.0))
@@ -109,8 +109,8 @@ PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const 
   return out;
 }
 
-PolarUpdate peridigmPolarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {
-  const Mat3 L = velocityGradientIncrement(Fn, F, F);  // Fdot F^-1 dt, Fdot dt = F - F_n
+PolarUpdate peridigmPolarUpdate(const Mat3& dFdt, const Mat3& F, const Mat3& Rn, const Mat3& Vn) {
+  const Mat3 L = velocityGradientIncrement(Mat3{}, dFdt, F);  // Fdot F^-1 dt
   const Mat3 D = sym(L), W = skew(L);
   const Mat3 Om = spinIncrement(Vn, D, W);  // with V_n: first order
   // Peridigm's Q = I + sin(t)/t Om - (1 - cos t)/t^2 Om^2, t = |omega dt| (its sign of the second term; for a
@@ -123,6 +123,12 @@ PolarUpdate peridigmPolarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, c
   out.V = Vn + mul(L, Vn) - mul(Vn, Om);  // V_n + dt (L V_n - V_n Omega)
   out.dUnrot = mulTN(out.R, mul(D, out.R));
   return out;
+}
+
+Mat3 velocityGradient(const FamilyView& fam, int i, const double* v, const Mat3& Kinv, bool planar) {
+  Mat3 Fdot = mul(familySums(fam, i, v, planar).N, Kinv);  // N: the sum of w (v_j - v_i) (x) xi
+  if (planar) Fdot[2] = Fdot[5] = Fdot[6] = Fdot[7] = Fdot[8] = 0.0;
+  return Fdot;
 }
 
 Mat3 piolaFromUnrotated(const Mat3& F, const Mat3& R, const Mat3& tau) {

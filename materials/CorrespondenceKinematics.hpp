@@ -29,10 +29,17 @@ struct PolarUpdate {
 void requirePositiveJacobian(const FamilyView& fam, int i, const double* y, const Mat3& F);
 
 PolarUpdate flanaganTaylor(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn);
-// Peridigm's update (correspondence.cxx, computeUnrotatedRateOfDeformationAndRotationTensor), first order: L dt =
-// Fdot dt F^-1 with Fdot dt = F - F_n (its velocity-state gradient over a step) and F the end of the step; the spin
-// from V_n; R = Q R_n with Peridigm's Q (see the .cpp); V = V_n + L V_n - V_n Omega (dt-scaled); d dt = R^T D R.
-PolarUpdate peridigmPolarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn);
+// Peridigm's update (correspondence.cxx, computeUnrotatedRateOfDeformationAndRotationTensor), first order, on the
+// end-of-step rate: L dt = (Fdot dt) F^-1 with F the end of the step and Fdot dt the step's gradient increment,
+// Peridigm's velocity-state gradient times dt (velocityGradient) or F - F_n without velocities (its QuasiStatic
+// velocity is the step's displacement increment over dt); the spin from V_n; R = Q R_n with Peridigm's Q (see the
+// .cpp); V = V_n + L V_n - V_n Omega (dt-scaled); d dt = R^T D R.
+PolarUpdate peridigmPolarUpdate(const Mat3& dFdt, const Mat3& F, const Mat3& Rn, const Mat3& Vn);
+
+// Peridigm's velocity-state gradient of owned node i, Fdot = (sum omega (v_j - v_i) (x) xi V_j) K^-1 (correspondence.cxx,
+// computeUnrotatedRateOfDeformationAndRotationTensor), with the weights of shapeAndGradient; v: 3 per overlap node.
+// planar: no out-of-plane rate (F_zz stays 1).
+Mat3 velocityGradient(const FamilyView& fam, int i, const double* v, const Mat3& Kinv, bool planar);
 
 // First Piola-Kirchhoff stress P = det(F) sigma F^-T with sigma = R tau R^T (Foster Eqs. 23-24).
 Mat3 piolaFromUnrotated(const Mat3& F, const Mat3& R, const Mat3& tau);

@@ -28,12 +28,48 @@ Dimension correspondenceDimension(const MaterialInput& in, const std::string& mo
   return Dimension::PlaneStrain;
 }
 
+// The trial and committed kinematic state of a block's nodes.
+struct KinematicFields {
+  TensorField F, R, V;
+  explicit KinematicFields(StateStore& s)
+      : F(s, "Deformation_Gradient", false), R(s, "Rotation_Tensor", false), V(s, "Left_Stretch_Tensor", false) {}
+};
+
+struct NodeKinematics {
+  Mat3 Kinv, F, R, de;
+};
+
+// Phase 1 of computeForce for owned node i: K^-1, F and the polar update (trial F, R, V written), dt the time since
+// the node's last commit. Stress damage (core/StressDamage.hpp): K and F leave out the bonds broken in fam.brokenN
+// (omega' = 0); a point whose intact bonds no longer span the space (singular K) is detached: no increment, so its
+// update is trivial. Returns false for such a point.
+bool nodeKinematics(const FamilyView& fam, int i, const double* y, KinematicFields& ks, bool planar, bool endOfStep,
+                    double dt, NodeKinematics& out) {
+  ShapeAndGradient sg;
+  bool attached = true;
+  if (!(fam.brokenN && fam.tensileStrength > 0.0))
+    sg = shapeAndGradient(fam, i, y, planar);
+  else if (!tryShapeAndGradient(fam, i, y, planar, sg))
+    attached = false, sg.Kinv = Mat3{}, sg.F = ks.F.committedAt(i);
+  if (attached) requirePositiveJacobian(fam, i, y, sg.F);
+  const Mat3 Fn = ks.F.committedAt(i), Rn = ks.R.committedAt(i), Vn = ks.V.committedAt(i);
+  PolarUpdate pu;
+  if (!endOfStep)
+    pu = flanaganTaylor(Fn, sg.F, Rn, Vn);
+  else  // Peridigm's Fdot dt: the velocity-state gradient where the solver gives velocities, else the step's F - F_n
+    pu = peridigmPolarUpdate(fam.velocity ? dt * velocityGradient(fam, i, fam.velocity, sg.Kinv, planar) : sg.F - Fn,
+                             sg.F, Rn, Vn);
+  out.Kinv = sg.Kinv, out.F = sg.F, out.R = pu.R, out.de = pu.dUnrot;
+  ks.F.set(i, sg.F), ks.R.set(i, pu.R), ks.V.set(i, pu.V);
+  return attached;
+}
+
 }  // namespace
 
 CorrespondenceMaterial::CorrespondenceMaterial(const MaterialInput& in, const std::string& model)
     : moduli_(elasticModuliFrom(in)), dim_(correspondenceDimension(in, model, &thickness_)),
       density_(in.get("Density")), hourglass_(in.get("Hourglass Coefficient")),
-      alpha_(in.get("Thermal Expansion Coefficient", 0.0)) {}
+      alpha_(in.get("Thermal Expansion Coefficient", 0.0)), endOfStep_(in.text("Rate Of Deformation") == "End Of Step") {}
 
 std::vector<std::string> CorrespondenceMaterial::fieldsRead() const {
   if (alpha_ == 0.0) return {};
@@ -46,12 +82,12 @@ void CorrespondenceMaterial::subtractThermalIncrement(const FamilyView& fam, con
   const double* dTn = state.committed("Temperature_Change");   // per owned node
   for (std::size_t k = 0; k < de.size(); ++k) {
     const int i = fam.begin + static_cast<int>(k);
-    const double d = alpha_ * (dT[i] - dTn[i]) / (1.0 + 0.5 * alpha_ * (dT[i] + dTn[i]));
+    const double d = alpha_ * (dT[i] - dTn[i]) / (endOfStep_ ? 1.0 : 1.0 + 0.5 * alpha_ * (dT[i] + dTn[i]));
     de[k][0] -= d, de[k][4] -= d, de[k][8] -= d;
   }
 }
 
-std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters() {
+std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters(RateRule byDefault) {
   using P = ParameterSpec;
   std::vector<ParameterSpec> params = {
       P::real("Density", "mass density [kg/m^3]").need().positive(),
@@ -66,6 +102,15 @@ std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters() {
       P::real("Thermal Expansion Coefficient",
               "linear thermal expansion coefficient alpha [1/K]: the thermal stretch (1 + alpha dT) I leaves the "
               "rate of deformation before the stress update (docs/thermal.md); reads the Temperature field"),
+      P::text("Rate Of Deformation",
+              "'End Of Step': Peridigm's rate, L = Fdot F^-1 at the step's end (Fdot from the velocities under Verlet, "
+              "(F - F_n)/dt otherwise), its first-order polar update and thermal increment; 'Midpoint': Periforge's, "
+              "(F - F_n) F_mid^-1/dt with the second-order Flanagan-Taylor update (a rigid rotation never stresses, "
+              "(1 + alpha dT) I is stress-free). Default: 'End Of Step' for Peridigm's models (Elastic, Elastic "
+              "Plastic, Isotropic Hardening Correspondence), 'Midpoint' for Viscoplastic and Drucker Prager "
+              "Correspondence (docs/materials.md)")
+          .oneOf({"End Of Step", "Midpoint"})
+          .byDefault(byDefault == RateRule::EndOfStep ? "End Of Step" : "Midpoint"),
   };
   for (ParameterSpec& p : heatParameters(true)) params.push_back(std::move(p));
   return params;
@@ -143,41 +188,42 @@ Mat3 CorrespondenceMaterial::elasticIncrement(const Mat3& de) const {
   return s;
 }
 
-PolarUpdate CorrespondenceMaterial::polarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) const {
-  return peridigmKinematics() ? peridigmPolarUpdate(Fn, F, Rn, Vn) : flanaganTaylor(Fn, F, Rn, Vn);
+std::vector<double> CorrespondenceMaterial::stepLengths(const FamilyView& fam, StateStore& state) const {
+  const double* timeN = state.committed("Correspondence_Time");
+  double* time = state.trial("Correspondence_Time");
+  std::vector<double> dt(static_cast<std::size_t>(fam.end - fam.begin));
+  for (int i = fam.begin; i < fam.end; ++i) {
+    dt[i - fam.begin] = fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
+    time[i] = fam.time;
+  }
+  return dt;
 }
 
 void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                           double* force) const {
-  const bool planar = isPlanar(dim_);
-  TensorField Fs(state, "Deformation_Gradient", false), Rs(state, "Rotation_Tensor", false),
-      Vs(state, "Left_Stretch_Tensor", false), taus(state, "Unrotated_Cauchy_Stress", true);
+  KinematicFields ks(state);
+  const TensorField& Fs = ks.F;
+  TensorField taus(state, "Unrotated_Cauchy_Stress", true);
   double* vm = state.trial("Von_Mises_Stress");
   const int n = fam.end - fam.begin;
   std::vector<Mat3> Kinv(n), F(n), R(n), tauN(n), de(n), tau(n);
   std::vector<double> Jn(dissipatedWanted_ ? n : 0);
-  // Stress damage (core/StressDamage.hpp): K and F leave out the bonds broken in fam.brokenN (omega' = 0). A point
-  // whose intact bonds no longer span the space (singular K) is detached: no stress and no hourglass term of its own,
-  // and sigma1 = +inf in its row so that its remaining bonds break at the next decision.
+  // A point detached by stress damage has no stress and no hourglass term of its own, and sigma1 = +inf in its row
+  // so that its remaining bonds break at the next decision.
   const bool stressDamage = fam.brokenN && fam.tensileStrength > 0.0;
   std::vector<char> detached(stressDamage ? n : 0, 0);
+  const std::vector<double> dt = stepLengths(fam, state);
   // Phase 1: kinematics of every owned node, from its own family.
   for (int k = 0; k < n; ++k) {
     const int i = fam.begin + k;
-    ShapeAndGradient sg;
-    if (!stressDamage)
-      sg = shapeAndGradient(fam, i, y, planar);
-    else if (!tryShapeAndGradient(fam, i, y, planar, sg))
-      detached[k] = 1, sg.Kinv = Mat3{}, sg.F = Fs.committedAt(i);  // no increment: the stress update is trivial
-    if (detached.empty() || !detached[k]) requirePositiveJacobian(fam, i, y, sg.F);
-    const PolarUpdate pu = polarUpdate(Fs.committedAt(i), sg.F, Rs.committedAt(i), Vs.committedAt(i));
-    Kinv[k] = sg.Kinv, F[k] = sg.F, R[k] = pu.R, de[k] = pu.dUnrot, tauN[k] = taus.committedAt(i);
     if (dissipatedWanted_) Jn[k] = det(Fs.committedAt(i));
-    Fs.set(i, sg.F), Rs.set(i, pu.R), Vs.set(i, pu.V);
+    NodeKinematics nk;
+    if (!nodeKinematics(fam, i, y, ks, isPlanar(dim_), endOfStep_, dt[k], nk)) detached[k] = 1;
+    Kinv[k] = nk.Kinv, F[k] = nk.F, R[k] = nk.R, de[k] = nk.de, tauN[k] = taus.committedAt(i);
   }
   // Phase 2: the model's stress update on the mechanical increment; phase 3: stress to force state, plus the
   // hourglass force.
-  stressUpdate(fam, state, R, tauN, de, tau);
+  stressUpdate(fam, state, R, dt, tauN, de, tau);
   const double c = hourglassConstant(fam.horizon);
   // Energies per node (J; docs/materials.md, "Energy"). Foster et al. (2010)'s Eqs. 49-52 are rate forms of
   // Cauchy stress: the stress power per reference volume is J sigma : D = J tau : d (Eq. 18's unrotated d).
@@ -231,9 +277,9 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
 // The optional outputs around the model's update: the rate before the thermal part leaves d (Peridigm's field is the
 // whole rate), the Cauchy stress after.
 void CorrespondenceMaterial::stressUpdate(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& R,
-                                          const std::vector<Mat3>& tauN, std::vector<Mat3>& de,
-                                          std::vector<Mat3>& tau) const {
-  writeRateOfDeformation(fam, state, de);
+                                          const std::vector<double>& dt, const std::vector<Mat3>& tauN,
+                                          std::vector<Mat3>& de, std::vector<Mat3>& tau) const {
+  writeRateOfDeformation(fam, state, de, dt);
   if (alpha_ != 0.0) subtractThermalIncrement(fam, state, de);
   updateStress(fam, state, tauN, de, tau);
   writeCauchyStress(fam, state, R, tau);

@@ -35,6 +35,8 @@ class CorrespondenceMaterial : public Material {
   void pairStiffness(const FamilyView& fam, double* c) const override;
   void enableOutput(const std::string& name) const override;
   bool wantsCommittedPositions() const override { return storedWanted_; }  // the hourglass work
+  // The end-of-step rate takes Peridigm's velocity-state gradient where the solver gives velocities (Verlet).
+  bool wantsVelocity() const override { return endOfStep_; }
   // With a Thermal Expansion Coefficient alpha: Temperature_Change (the thermal strain increment leaves d before the
   // stress update, thermalIncrement).
   std::vector<std::string> fieldsRead() const override;
@@ -48,8 +50,12 @@ class CorrespondenceMaterial : public Material {
   double hourglassConstant(double horizon) const;
   double micromodulus(double horizon) const;  // the same without the coefficient
 
-  // The parameters every correspondence model takes (the model's own ones are appended by the caller).
-  static std::vector<ParameterSpec> commonParameters();
+  // Which rate of deformation drives the stress update ('Rate Of Deformation'): Peridigm's, at the step's end
+  // (first-order polar update, peridigmPolarUpdate), or Periforge's midpoint one (flanaganTaylor).
+  enum class RateRule { EndOfStep, Midpoint };
+  // The parameters every correspondence model takes (the model's own ones are appended by the caller), with the
+  // model's default rate rule: Peridigm's models EndOfStep (its decks' answer), Periforge's own Midpoint.
+  static std::vector<ParameterSpec> commonParameters(RateRule byDefault);
   // Its terms on Temperature from those parameters (conduction, plastic heating: SolidParameters' heatTermsOf).
   static std::vector<std::unique_ptr<FieldOperator>> heatTerms(const MaterialInput& in, const std::string& model);
   // Output names of the base fields: Unrotated_Cauchy_Stress{XX,YY,ZZ,XY,YZ,XZ}, Von_Mises_Stress,
@@ -64,9 +70,6 @@ class CorrespondenceMaterial : public Material {
   virtual void updateStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& tauN,
                             const std::vector<Mat3>& de, std::vector<Mat3>& tau) const = 0;
   virtual std::vector<StateSpec> modelStateSpecs() const { return {}; }
-  // Peridigm's first-order polar update (peridigmPolarUpdate) instead of the midpoint Flanagan-Taylor one: the
-  // models whose suite decks compare with Peridigm's gold to round-off.
-  virtual bool peridigmKinematics() const { return false; }
 
   // Hooke's law on an increment: lambda tr(de) I + 2 mu de = K tr(de) I + 2 mu dev(de).
   Mat3 elasticIncrement(const Mat3& de) const;
@@ -79,18 +82,23 @@ class CorrespondenceMaterial : public Material {
   virtual Mat3 elasticStrain(const Mat3& dtau) const;
 
  private:
-  // flanaganTaylor or, for peridigmKinematics(), peridigmPolarUpdate.
-  PolarUpdate polarUpdate(const Mat3& Fn, const Mat3& F, const Mat3& Rn, const Mat3& Vn) const;
+  // Per owned node, the time since its last commit (Correspondence_Time; FamilyView::startTime before any), and
+  // the trial time set to FamilyView::time.
+  std::vector<double> stepLengths(const FamilyView& fam, StateStore& state) const;
+
   ElasticModuli moduli_;
   double thickness_ = 0.0;  // before dim_: its initialiser writes it
   Dimension dim_;
   double density_;
   double hourglass_;  // Hourglass Coefficient
   double alpha_ = 0.0;  // Thermal Expansion Coefficient; 0: none
-  // de -= the increment of the thermal stretch F_th = (1 + alpha dT) I, in the midpoint form the kinematics use for
-  // d (flanaganTaylor: d = (F - F_n) F_mid^-1), so that a free body heated uniformly has no stress: for each owned
-  // node, alpha (dT - dT_n) / (1 + alpha (dT + dT_n) / 2) off every diagonal component (zz too: in plane strain the
-  // out-of-plane strain is held, so its thermal part is a mechanical strain).
+  bool endOfStep_;      // 'Rate Of Deformation' = 'End Of Step'
+  // de -= the increment of the thermal stretch F_th = (1 + alpha dT) I off every diagonal component (zz too: in
+  // plane strain the out-of-plane strain is held, so its thermal part is a mechanical strain). Midpoint: in the
+  // midpoint form the kinematics use for d (flanaganTaylor: d = (F - F_n) F_mid^-1), alpha (dT - dT_n) / (1 + alpha
+  // (dT + dT_n) / 2), so that (1 + alpha dT) I is exactly stress-free; end of step: Peridigm's alpha (dT - dT_n)
+  // (elastic_correspondence.cxx, updateElasticCauchyStress), stress-free for a stretch growing as
+  // lambda_n / (1 - alpha (dT - dT_n)) per step.
   void subtractThermalIncrement(const FamilyView& fam, const StateStore& state, std::vector<Mat3>& de) const;
   // Set by enableOutput before the run (blocks share the material): the energy fields cost a little per node
   // and bond, so only runs that ask for them pay; they never change a force.
@@ -102,10 +110,11 @@ class CorrespondenceMaterial : public Material {
   // Hourglass_Force_Density{X,Y,Z}: the hourglass part of the force density (completeForce).
   std::vector<StateSpec> outputStateSpecs() const;
   // subtractThermalIncrement and updateStress, with the rate and Cauchy stress outputs around them.
-  void stressUpdate(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& R,
+  void stressUpdate(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& R, const std::vector<double>& dt,
                     const std::vector<Mat3>& tauN, std::vector<Mat3>& de, std::vector<Mat3>& tau) const;
   void enableTensorOutput(const std::string& name) const;
-  void writeRateOfDeformation(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& de) const;
+  void writeRateOfDeformation(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& de,
+                              const std::vector<double>& dt) const;
   void writeCauchyStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& R,
                          const std::vector<Mat3>& tau) const;
   // The trial arrays of Hourglass_Force_Density{X,Y,Z}, or three nulls when not asked for.

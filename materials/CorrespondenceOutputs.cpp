@@ -15,7 +15,8 @@ std::vector<StateSpec> CorrespondenceMaterial::outputStateSpecs() const {
   // History, so that an evaluation without time passing (the output pass after a quasi-static step's commit)
   // reports the rate of the step that led to the state instead of 0/0.
   addTensorSpecs(s, "Unrotated_Rate_Of_Deformation", true, true, false);
-  // The time of the node's last commit; NaN: never committed, the step then starts at FamilyView::startTime.
+  // The time of the node's last commit (the step's dt: the rate output, Peridigm's velocity-state increment); NaN:
+  // never committed, the step then starts at FamilyView::startTime.
   s.push_back({"Correspondence_Time", Location::Node, true, false, std::numeric_limits<double>::quiet_NaN()});
   for (const char* c : {"X", "Y", "Z"}) s.push_back({std::string("Hourglass_Force_Density") + c, Location::Node, false, true});
   return s;
@@ -29,18 +30,15 @@ void CorrespondenceMaterial::enableTensorOutput(const std::string& name) const {
 }
 
 // Peridigm's field is the unrotated rate of deformation d = R^T D R of the step (correspondence.cxx,
-// computeUnrotatedRateOfDeformationAndRotationTensor); here the kinematics' midpoint increment d dt over dt.
-void CorrespondenceMaterial::writeRateOfDeformation(const FamilyView& fam, StateStore& state,
-                                                    const std::vector<Mat3>& de) const {
+// computeUnrotatedRateOfDeformationAndRotationTensor): the kinematics' increment d dt over dt, the time since the
+// node's last commit (stepLengths), at the step's end or its midpoint as the model's 'Rate Of Deformation' says.
+void CorrespondenceMaterial::writeRateOfDeformation(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& de,
+                                                    const std::vector<double>& dt) const {
   if (!rateWanted_) return;
   TensorField rate(state, "Unrotated_Rate_Of_Deformation", true);
-  const double* timeN = state.committed("Correspondence_Time");
-  double* time = state.trial("Correspondence_Time");
   for (std::size_t k = 0; k < de.size(); ++k) {
     const int i = fam.begin + static_cast<int>(k);
-    const double dt = fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
-    rate.set(i, dt > 0.0 ? (1.0 / dt) * de[k] : rate.committedAt(i));
-    time[i] = fam.time;
+    rate.set(i, dt[k] > 0.0 ? (1.0 / dt[k]) * de[k] : rate.committedAt(i));
   }
 }
 

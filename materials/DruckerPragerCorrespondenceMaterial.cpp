@@ -9,7 +9,7 @@ DruckerPragerCorrespondenceMaterial::DruckerPragerCorrespondenceMaterial(const M
 
 MaterialEntry DruckerPragerCorrespondenceMaterial::entry() {
   using P = ParameterSpec;
-  std::vector<ParameterSpec> params = commonParameters();
+  std::vector<ParameterSpec> params = commonParameters(RateRule::Midpoint);
   params.push_back(P::real("Friction Angle", "internal friction angle phi [degrees] of A, B (Li & Geng Eq. 38)")
                        .need().nonNegative().below(90.0));
   params.push_back(P::real("Cohesion", "c of B (Eq. 38) [Pa]").need().nonNegative());

@@ -9,7 +9,7 @@ MaterialEntry ElasticCorrespondenceMaterial::entry() {
   MaterialEntry e{"Elastic Correspondence",
           "hypoelastic correspondence (non-ordinary state-based) solid with hourglass control (Peridigm; Foster et "
           "al. 2010 kinematics)",
-          commonParameters(),
+          commonParameters(RateRule::EndOfStep),
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticCorrespondenceMaterial(in)); },
           commonOutputs()};
   e.createOperators = [](const MaterialInput& in) { return heatTerms(in, "Elastic Correspondence"); };

@@ -16,7 +16,7 @@ const char* const kFlawParameters[] = {"Flaw Location X", "Flaw Location Y", "Fl
 
 MaterialEntry entryOf(bool hardening) {
   using P = ParameterSpec;
-  std::vector<ParameterSpec> params = CorrespondenceMaterial::commonParameters();
+  std::vector<ParameterSpec> params = CorrespondenceMaterial::commonParameters(CorrespondenceMaterial::RateRule::EndOfStep);
   params.push_back(P::real("Yield Stress", "Y, the initial yield stress [Pa]").need().positive());
   if (hardening) {
     params.push_back(P::real("Hardening Modulus", "H [Pa]: the yield stress is Y + H eps_p").need());

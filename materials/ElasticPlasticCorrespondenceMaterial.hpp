@@ -23,7 +23,6 @@ class ElasticPlasticCorrespondenceMaterial : public CorrespondenceMaterial {
   void updateStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& tauN,
                     const std::vector<Mat3>& de, std::vector<Mat3>& tau) const override;
   std::vector<StateSpec> modelStateSpecs() const override;
-  bool peridigmKinematics() const override { return true; }  // Peridigm's gold needs its first-order update
 
  private:
   bool hardening_;

@@ -41,7 +41,7 @@ double ViscoplasticCorrespondenceMaterial::softening(double T) const {
 
 MaterialEntry ViscoplasticCorrespondenceMaterial::entry() {
   using P = ParameterSpec;
-  std::vector<ParameterSpec> params = commonParameters();
+  std::vector<ParameterSpec> params = commonParameters(RateRule::Midpoint);
   params.push_back(P::real("Yield Stress", "Y, quasi-static yield stress [Pa] (Foster et al. 2010 Eq. 59)").need().positive());
   params.push_back(P::real("Strain Hardening Exponent", "n of Eq. 59").need().positive());
   params.push_back(P::real("Rate Sensitivity Exponent", "m of Eq. 58").need().positive());

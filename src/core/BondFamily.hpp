@@ -60,6 +60,11 @@ struct FamilyView {
   // over the step (an energy output); null unless the model asks (Material::wantsCommittedPositions) and
   // a state has been committed. Never needed for a force.
   const double* yN = nullptr;
+  // Velocities of the state evaluated, 3 per overlap node (Peridigm's velocity at NP1: Verlet's half-step one, the
+  // conditions' rate at prescribed components), for a model whose rate is the velocity gradient (Peridigm's
+  // correspondence rate); null unless the model asks (Material::wantsVelocity) and the solver gives them
+  // (Model::setVelocity: Verlet). Kinematics like y and yN, not a field.
+  const double* velocity = nullptr;
   // Loading-balance correction (solvers/YieldRounds.hpp): per owned node, 1 if the point may return-map in this
   // evaluation, 0 if it must respond elastically even past its yield surface; null: every point may (normal
   // runs). Only models with Material::supportsYieldRounds() read it.

@@ -58,6 +58,9 @@ class Material {
   // Whether computeForce wants FamilyView::yN (the committed deformed positions): the core then keeps a
   // copy of the overlap positions per commit. Default no; asked on each evaluation and commit.
   virtual bool wantsCommittedPositions() const { return false; }
+  // Whether computeForce reads FamilyView::velocity (the velocities of the state evaluated, where the solver has
+  // them): the core then ghosts them per evaluation. Default no.
+  virtual bool wantsVelocity() const { return false; }
 
   // Whether computeForce honours FamilyView's bond damage (core/BondDamage.hpp). A block with a damage model
   // and a material that does not is refused at input, so no deck silently runs without its breaks.

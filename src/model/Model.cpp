@@ -262,11 +262,24 @@ void Model::setCommittedDisplacement(const double* u) {
   for (std::size_t k = 0; k < yCommitted_.size(); ++k) yCommitted_[k] = x_[k] + uOverlap_[k];
 }
 
+void Model::setVelocity(const double* v) {
+  if (!v) return vOverlap_.clear();
+  if (velocityWanted_ < 0) {
+    bool wanted = false;
+    for (const BlockModel& b : blocks_) wanted = wanted || b.material->wantsVelocity();
+    velocityWanted_ = layout_->max(wanted ? 1.0 : 0.0) > 0.0 ? 1 : 0;
+  }
+  if (!velocityWanted_) return;
+  vOverlap_.resize(x_.size());
+  layout_->importToOverlap(v, vOverlap_.data(), 3);
+}
+
 FamilyView Model::blockView(const BlockModel& b) const {
   FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
   view.time = time_;
   view.startTime = startTime_;
   if (!yCommitted_.empty()) view.yN = yCommitted_.data();
+  if (!vOverlap_.empty()) view.velocity = vOverlap_.data();
   if (band_ && b.surfaceBand) {
     view.band = band_->band.data();
     view.outerNormal = band_->outerNormal.data();

@@ -155,6 +155,10 @@ class Model {
   void enforceRigidWalls(double dt, double* u, double* v, const double* a);
   // A restart: u (3 per owned node) is the committed state (FamilyView::yN of the next evaluation). Collective.
   void setCommittedDisplacement(const double* u);
+  // The velocities of the state the next evaluations are at (3 per owned node; Peridigm's velocity at NP1), ghosted
+  // for the materials that read FamilyView::velocity (Material::wantsVelocity); null: none from now on (a solver
+  // without velocities, or the end of the one that set them). Collective unless null.
+  void setVelocity(const double* v);
   // 3 per wall: this rank's share of each wall's force on the body in the last enforced step (0 before).
   const std::vector<double>& wallReactions() const { return wallReaction_; }
 
@@ -252,6 +256,8 @@ class Model {
   void exchangeAndComplete(const double* y, bool onlyFieldReaders);
   static bool readsField(const BlockModel& b);    // its material reads a field (Material::fieldsRead)
   std::vector<double> yEvaluated_, yCommitted_;  // positions of the last internalForce and of the last commit
+  std::vector<double> vOverlap_;                 // setVelocity's ghosted velocities; empty: none
+  int velocityWanted_ = -1;                      // some block's material reads them (on any rank); -1: not asked yet
   bool wantsPositions() const;
   std::vector<NodalLoad> prescribedLoads_, bodyForces_, followerLoads_;
   std::vector<double> followerQ_;                  // 3 per owned node at followerTime_ (FamilyView::followerLoad)

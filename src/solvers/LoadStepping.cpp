@@ -15,7 +15,7 @@ namespace pf {
 ResidualNorms residualNorms(const Model& model, const std::vector<double>& f, const std::vector<double>& b) {
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double>& V = model.volume();
-  double r2 = 0, rd2 = 0, l2 = 0, b2 = 0;
+  double r2 = 0, rd2 = 0, l2 = 0, b2 = 0, rInf = 0;
   for (std::size_t k = 0; k < f.size(); ++k) {
     const double vol = V[k / 3];
     if (fixed[k]) {
@@ -24,13 +24,16 @@ ResidualNorms residualNorms(const Model& model, const std::vector<double>& f, co
       const double r = f[k] + b[k];
       r2 += r * r * vol * vol;
       rd2 += r * r;
+      rInf = std::max(rInf, std::fabs(r * vol));
     }
     b2 += b[k] * b[k] * vol * vol;
   }
-  double in[4] = {r2, l2, b2, rd2}, out[4];
+  double in[4] = {r2, l2, b2, rd2}, out[4], inf = 0;
   model.layout().comm().sum(in, out, 4);
+  model.layout().comm().max(&rInf, &inf, 1);
   // model.fieldLoad(): a heated body's thermal load (0 for mechanics-only models, whose scale stays as it was).
-  return {std::sqrt(out[0]), std::sqrt(out[1]) + std::sqrt(out[2]) + model.fieldLoad(), std::sqrt(out[3])};
+  return {std::sqrt(out[0]), std::sqrt(out[1]) + std::sqrt(out[2]) + model.fieldLoad(), std::sqrt(out[3]),
+          std::sqrt(out[0]) + 20.0 * inf};
 }
 
 void predictStep(const Model& model, double t, std::vector<double>& u, const std::vector<double>& duPrev) {

@@ -13,7 +13,10 @@ struct SolverResume;
 struct ResidualNorms {
   double residual = 0;         // || (f + b) V || over free dofs (force)
   double load = 0;             // || f V || over prescribed dofs (reaction) + || b V ||
-  double residualDensity = 0;  // || f + b || over free dofs (force density, Peridigm's tolerance unit)
+  double residualDensity = 0;  // || f + b || over free dofs (force density)
+  // Peridigm's QuasiStatic measure (Peridigm.cpp, computeQuasiStaticResidual): ||r||_2 + 20 ||r||_inf of the force
+  // r = (f + b) V over free dofs, which its 'Absolute Tolerance' bounds.
+  double peridigmQuasiStatic = 0;
 };
 
 // f: internal force density, b: body force density, 3 per owned node; reduced over all ranks.

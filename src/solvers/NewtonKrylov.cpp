@@ -22,8 +22,10 @@ namespace {
 // (loadScale, the same test ADR uses) or the force-density residual is below the absolute tolerance.
 class ForceResidualTest : public NOX::StatusTest::Generic {
  public:
-  ForceResidualTest(const Model& model, const StepResidual& p, double rel, double abs, double loadFloor)
-      : model_(model), problem_(p), rel_(rel), abs_(abs), floor_(loadFloor) {}
+  ForceResidualTest(const Model& model, const StepResidual& p, double rel, double abs, bool peridigm, double loadFloor)
+      : model_(model), problem_(p), rel_(rel), abs_(abs), peridigm_(peridigm), floor_(loadFloor) {}
+  // What the absolute tolerance bounds: the force-density norm, or Peridigm's QuasiStatic measure.
+  double absoluteMeasure(const ResidualNorms& r) const { return peridigm_ ? r.peridigmQuasiStatic : r.residualDensity; }
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
     // SIGTERM/SIGINT end the run between Newton iterations too: a step whose Krylov solves fail may take
     // minutes (every rank checks here, after the same iteration; one reduction).
@@ -34,14 +36,14 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
     if (!solver.getSolutionGroup().isF()) return status_ = NOX::StatusTest::Unevaluated;
     last_ = problem_.norms();
     tol_ = rel_ * loadScale(last_, floor_);
-    const bool ok = last_.residual <= tol_ || (abs_ > 0 && last_.residualDensity <= abs_) || last_.residual == 0.0;
+    const bool ok = last_.residual <= tol_ || (abs_ > 0 && absoluteMeasure(last_) <= abs_) || last_.residual == 0.0;
     return status_ = ok ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& os, int indent) const override {
     for (int i = 0; i < indent; ++i) os << ' ';
-    os << "force residual " << last_.residual << " N (tolerance " << tol_ << " N), density "
-       << last_.residualDensity;
+    os << "force residual " << last_.residual << " N (tolerance " << tol_ << " N), "
+       << (peridigm_ ? "Peridigm's |r|_2 + 20 |r|_inf " : "density ") << absoluteMeasure(last_);
     if (abs_ > 0) os << " (tolerance " << abs_ << ")";
     os << "\n";
     return os;
@@ -50,7 +52,7 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
   double reductionNeeded(const ResidualNorms& r) const {
     double need = 0;
     if (r.residual > 0) need = std::max(need, rel_ * loadScale(r, floor_) / r.residual);
-    if (abs_ > 0 && r.residualDensity > 0) need = std::max(need, abs_ / r.residualDensity);
+    if (abs_ > 0 && absoluteMeasure(r) > 0) need = std::max(need, abs_ / absoluteMeasure(r));
     return need;
   }
   const ResidualNorms& last() const { return last_; }
@@ -59,7 +61,9 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
  private:
   const Model& model_;
   const StepResidual& problem_;
-  double rel_, abs_, floor_, tol_ = 0;
+  double rel_, abs_;
+  bool peridigm_;
+  double floor_, tol_ = 0;
   ResidualNorms last_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
@@ -89,7 +93,8 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
   auto params = noxParameters(opt_, model.layout().rank(), &adaptiveTolerance);
   Teuchos::ParameterList& ls = params->sublist("Direction").sublist("Newton").sublist("Linear Solver");
 
-  auto force = Teuchos::rcp(new ForceResidualTest(model, residual, opt_.relativeTolerance, opt_.absoluteTolerance, loadFloor));
+  auto force = Teuchos::rcp(new ForceResidualTest(model, residual, opt_.relativeTolerance, opt_.absoluteTolerance,
+                                                      opt_.peridigmAbsolute, loadFloor));
   auto combo = Teuchos::rcp(new NOX::StatusTest::Combo(NOX::StatusTest::Combo::OR));
   combo->addStatusTest(force);
   combo->addStatusTest(Teuchos::rcp(new NOX::StatusTest::MaxIters(opt_.maxIterations)));

@@ -16,7 +16,9 @@ class KrylovSolver;
 
 struct NewtonKrylovOptions {
   double relativeTolerance = 1e-10;  // of the load scale (reaction + body force + inertia), as ADR's
-  double absoluteTolerance = 0.0;    // on the residual force-density norm (Peridigm's unit)
+  double absoluteTolerance = 0.0;    // on the residual force-density norm, or with peridigmAbsolute:
+  // on Peridigm's QuasiStatic measure ||(f + b) V||_2 + 20 ||(f + b) V||_inf (ResidualNorms::peridigmQuasiStatic)
+  bool peridigmAbsolute = false;
   int maxIterations = 30;            // Newton iterations per solve
   bool verbose = false;              // print NOX's residual history
   // The Krylov operator: the materials' exact directional derivative (forceDerivative) where every block's
@@ -47,7 +49,7 @@ struct NewtonOutcome {
   bool converged = false;
   int iterations = 0, linearIterations = 0;
   double residual = 0, tolerance = 0;  // force residual (free dofs) and the relative test's bound on it [N]
-  double residualDensity = 0;          // the same residual as force density (the absolute test's measure)
+  double residualDensity = 0;          // the same residual as force density
   double load = 0;                     // the last residual's load scale (ResidualNorms::load)
 };
 

@@ -1,6 +1,7 @@
 // The registry entries of the Newton-Krylov solver: Periforge's "NOXQuasiStatic" and Peridigm's
 // "QuasiStatic", both served by NoxQuasiStaticSolver.
 #include <algorithm>
+#include <string>
 
 #include "NoxQuasiStaticSolver.hpp"
 #include "core/InputError.hpp"
@@ -11,21 +12,28 @@ namespace {
 
 using S = ParameterSpec;
 
-std::vector<ParameterSpec> commonSpecs() {
+// peridigmQuasiStatic: Peridigm's "QuasiStatic", whose Absolute Tolerance bounds its own residual measure.
+std::vector<ParameterSpec> commonSpecs(bool peridigmQuasiStatic) {
   return {S::real("Relative Tolerance", "residual / load scale (reaction + body force, never below the largest of a converged step) that ends a step; "
                                         "at least 1e-14 (about 50 machine epsilons: below, a converged step's residual is round-off "
                                         "and the step could never end)")
               .byDefault("1e-10").atLeast(1e-14),
-          S::real("Absolute Tolerance", "residual force-density norm that ends a step; given alone (without "
-                                        "`Relative Tolerance`) it is the only test").positive(),
+          S::real("Absolute Tolerance",
+                  std::string(peridigmQuasiStatic
+                                  ? "Peridigm's QuasiStatic residual ||r||_2 + 20 ||r||_inf, r = (f + b) V the force "
+                                    "[N] on the free dofs (Peridigm.cpp, computeQuasiStaticResidual), that ends a step"
+                                  : "residual force-density norm [N/m^3] that ends a step") +
+                      "; given alone (without `Relative Tolerance`) it is the only test")
+              .positive(),
           S::integer("Maximum Solver Iterations", "Newton iterations per (sub)step").byDefault("30").atLeast(1),
           S::flag("Verbose", "print NOX's residual history").byDefault("false"),
           S::integer("Max Age Of Prec", "Peridigm's preconditioner age; accepted: Periforge builds its pair-stiffness "
                                         "preconditioner once, from the reference configuration, so nothing ages")};
 }
 
-std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passThrough) {
+std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passThrough, bool peridigmQuasiStatic) {
   NoxOptions o;
+  o.newton.peridigmAbsolute = peridigmQuasiStatic;
   // Peridigm's decks give one of the two; an absolute tolerance alone means just that test.
   const bool absOnly = p.has("Absolute Tolerance") && !p.has("Relative Tolerance");
   o.newton.relativeTolerance = absOnly ? 0.0 : p.get("Relative Tolerance");
@@ -60,7 +68,7 @@ SolverEntry NoxQuasiStaticSolver::entry() {
   e.name = "NOXQuasiStatic";
   e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES by Belos, MueLu or Ifpack2 preconditioner)";
   e.loadSteps = true;
-  e.parameters = commonSpecs();
+  e.parameters = commonSpecs(false);
   e.parameters.insert(e.parameters.begin(), S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1));
   e.parameters.push_back(S::integer("Max Solver Iterations", "Peridigm's name for `Maximum Solver Iterations`").atLeast(1));
   e.parameters.push_back(S::integer("Maximum Load Step Cuts", "a failing step is halved at most this many times, then "
@@ -75,7 +83,7 @@ SolverEntry NoxQuasiStaticSolver::entry() {
                                              "forward difference of the force (for comparisons)")
                              .oneOf({"Exact", "Finite Difference"}).byDefault("Exact"));
   e.passThrough = {"Direction", "Line Search", "Printing", "Solver Options"};
-  e.create = create;
+  e.create = [](const ParameterValues& p, const ParamTree& pass) { return create(p, pass, false); };
   return e;
 }
 
@@ -84,14 +92,14 @@ SolverEntry NoxQuasiStaticSolver::peridigmEntry() {
   e.name = "QuasiStatic";
   e.doc = "Peridigm's implicit quasi-static solver; served by the NOXQuasiStatic engine";
   e.loadSteps = true;
-  e.parameters = commonSpecs();
+  e.parameters = commonSpecs(true);
   e.parameters.insert(e.parameters.begin(),
                       S::integer("Number of Load Steps", "n (or `Time Steps` without the list's `Final Time`)").atLeast(1));
   e.parameters.insert(e.parameters.begin() + 1, S::text("Time Steps", "the load times, the first being the initial time"));
   e.parameters.push_back(S::text("Belos Linear Solver", "Peridigm's Krylov method; accepted, Periforge's is GMRES (each "
                                                         "step converges to the same tolerance)")
                              .oneOf({"BlockCG", "BlockGmres", "Block CG", "Block GMRES", "GMRES", "CG"}));
-  e.create = create;
+  e.create = [](const ParameterValues& p, const ParamTree& pass) { return create(p, pass, true); };
   return e;
 }
 

@@ -175,15 +175,20 @@ void VerletSolver::check(const Model& model) const {
   if (dt > stable) warn(opt_.where + ": " + msg + "; the run may go unstable");
 }
 
-// The step's end state at t: the force at u (mechanics) or only the conditions of t, then the field advanced over
+// The step's end state at t: the force at positions y and velocities v (mechanics; v is Peridigm's velocity at the
+// evaluation, the half-step one with the conditions' rate at prescribed components, which its correspondence rate
+// reads: Model::setVelocity, for this evaluation only) or only the conditions of t, then the field advanced over
 // dt (0: the start, nothing to advance), then the commit.
 void VerletSolver::evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt,
-                            const std::vector<double>& y, std::vector<double>& f) const {
+                            const std::vector<double>& y, const std::vector<double>& v, std::vector<double>& f) const {
   const CheckPoint at{"Verlet", step, t};
-  if (advances("Displacement"))
+  if (advances("Displacement")) {
+    model.setVelocity(v.data());
     atStep(at, [&] { model.internalForceAt(y.data(), f.data()); });
-  else
+    model.setVelocity(nullptr);  // other evaluations (another solver's, an output's) have no velocities
+  } else {
     model.updateFields();
+  }
   if (heat && dt > 0.0) atStep(at, [&] { heat->advance(model, dt, advances("Displacement")); });
   model.commit();  // an explicit step is complete once its force (and field) is evaluated
 }
@@ -251,7 +256,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
   } else {
     model.applyPrescribed(t0, u.data(), true);
     verletPositions(model, u, u, v, 0.0, y);
-    evaluate(model, heat.get(), 0, t0, 0.0, y, f);
+    evaluate(model, heat.get(), 0, t0, 0.0, y, v, f);
     if (terms.on()) terms.evaluate(model, 0, t0, y, v);
     model.bodyForce(t0, b.data());
   }
@@ -280,7 +285,7 @@ void VerletSolver::run(Model& model, std::vector<double>& u, std::vector<double>
     for (int k = 0; k < n; ++k)
       if (fixed[k]) v[k] = (u[k] - uPrev[k]) * rate;
     verletPositions(model, uPrev, u, v, dt, y);
-    forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, y, f); });
+    forceTime.time([&] { evaluate(model, heat.get(), s, t, dt, y, v, f); });
     if (terms.on()) terms.evaluate(model, s, t, y, v);
     if (model.hasBodyForce() && mechanics) model.bodyForce(t, b.data());
     double probe = 0.0;  // non-finite iff some u, v or f is (the check reads the state, never alters it)

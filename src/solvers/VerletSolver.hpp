@@ -54,7 +54,7 @@ class VerletSolver : public Solver {
   // The Temperature field's explicit step when the deck has Verlet advance it (the field then marked solved), or null.
   std::unique_ptr<ExplicitFieldStep> heatStep(Model& model) const;
   void evaluate(Model& model, ExplicitFieldStep* heat, long step, double t, double dt, const std::vector<double>& y,
-                std::vector<double>& f) const;
+                const std::vector<double>& v, std::vector<double>& f) const;
   VerletOptions opt_;
 };
 

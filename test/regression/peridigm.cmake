@@ -167,7 +167,16 @@ set(peridigm_suite_cases
   "Compression_2x1x1 Compression_2x1x1.yaml Compression_2x1x1 Compression_2x1x1.comp"
   "Compression_3x1x1_InfluenceFunction Compression_3x1x1_InfluenceFunction.xml Compression_3x1x1_InfluenceFunction Compression_3x1x1_InfluenceFunction.comp"
   "MultipleOutputFiles MultipleOutputFiles.xml MultipleOutputFiles1 MultipleOutputFiles1.comp"
-  "NodalVariableOutput NodalVariableOutput.xml NodalVariableOutput NodalVariableOutput.comp")
+  "NodalVariableOutput NodalVariableOutput.xml NodalVariableOutput NodalVariableOutput.comp"
+  # Peridigm's correspondence models with its end-of-step rate ('Rate Of Deformation', docs/materials.md), every
+  # output of the decks: whole tensors, Hourglass_Force_Density, Unrotated_Rate_Of_Deformation.
+  "ElasticCorrespondenceFullyPrescribedTension ElasticCorrespondenceFullyPrescribedTension.xml ElasticCorrespondenceFullyPrescribedTension ElasticCorrespondenceFullyPrescribedTension.comp"
+  "ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.xml ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.comp"
+  "IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.comp"
+  "IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.comp"
+  "ThermalExpansionCubeElasticCorrespondence ThermalExpansionCubeElasticCorrespondence.xml ThermalExpansionCubeElasticCorrespondence ThermalExpansionCubeElasticCorrespondence.comp"
+  # Peridigm's QuasiStatic 'Absolute Tolerance' on its own residual measure, ||f V||_2 + 20 ||f V||_inf
+  "ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.xml ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 1 2)
@@ -175,40 +184,6 @@ foreach(entry ${peridigm_suite_cases})
     periforge_check(peridigm_suite_${case}_np${np}_vs_gold peridigm_suite_${case}_np${np}
       ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_suite_${case}_np${np}/${out}.e
       ${PERIDIGM_SUITE}/${case}/${out}_gold.e ${PERIDIGM_SUITE}/${case}/${comp})
-  endforeach()
-endforeach()
-
-# Peridigm's tensor and vector outputs of Elastic Correspondence (Cauchy_Stress, Rotation_Tensor,
-# Shape_Tensor_Inverse, Hourglass_Force_Density, ...) on its thermal-expansion cube, run unmodified: the variables
-# Periforge's kinematics share with Peridigm's, within Peridigm's tolerances (compat/correspondence_tensors_thermal.comp
-# names the others and why they differ).
-foreach(np 1 2)
-  set(case ThermalExpansionCubeElasticCorrespondence)
-  periforge_run(peridigm_suite_${case}_np${np} ${PERIDIGM_SUITE}/${case}/${case}.xml ${np})
-  periforge_check(peridigm_suite_${case}_np${np}_tensors_vs_gold peridigm_suite_${case}_np${np}
-    ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/peridigm_suite_${case}_np${np}/${case}.e
-    ${PERIDIGM_SUITE}/${case}/${case}_gold.e ${REG}/compat/correspondence_tensors_thermal.comp)
-endforeach()
-
-# Peridigm's J2 correspondence models against Peridigm's gold with the outputs Periforge writes: these decks still
-# stop on Peridigm's tensor outputs (Deformation_Gradient, Cauchy_Stress, ... as whole tensors, Hourglass_Force_Density),
-# so test/regression/peridigm_models/reduced_vs_gold.py drops those lines from a copy of the deck and of the .comp
-# and compares everything else (Displacement, Velocity, Force, Von_Mises_Stress, Equivalent_Plastic_Strain).
-set(peridigm_reduced_cases
-  "ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.xml ElasticPlasticCorrespondenceFullyPrescribedTension ElasticPlasticCorrespondenceFullyPrescribedTension.comp"
-  "IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw IsotropicHardeningPlasticFullyPrescribedTension_NoFlaw.comp"
-  "IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.xml IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw IsotropicHardeningPlasticFullyPrescribedTension_WithFlaw.comp")
-foreach(entry ${peridigm_reduced_cases})
-  peridigm_case_fields("${entry}")
-  foreach(np 1 2)
-    set(name peridigm_reduced_${case}_np${np}_vs_gold)
-    set(wd ${CMAKE_CURRENT_BINARY_DIR}/regression/${name})
-    file(MAKE_DIRECTORY ${wd})
-    periforge_shared_guard(guard ${PERIDIGM_SUITE}/${case}/${deck})
-    add_test(NAME ${name} COMMAND ${guard} ${PY} ${REG}/peridigm_models/reduced_vs_gold.py ${PERIDIGM_SUITE}/${case}
-      ${deck} ${out} ${comp} ${np} ${PERIFORGE_EXE} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${MPIRUN} WORKING_DIRECTORY ${wd})
-    set_tests_properties(${name} PROPERTIES LABELS "regression" PROCESSORS ${np})
-    periforge_mark_shared(${name} "${guard}")
   endforeach()
 endforeach()
 

@@ -112,7 +112,7 @@ TEST(PeridigmJ2, HardeningFirstPlasticStepClosedForm) {
 // order (error ratio in [1.7, 2.3] when the steps halve; measured and printed).
 TEST(PeridigmJ2, PeridigmPolarUpdate) {
   const Mat3 Fn = {1.001, 0, 0, 0, 1.002, 0, 0, 0, 0.999}, F = {1.0015, 0, 0, 0, 1.0032, 0, 0, 0, 0.9985};
-  const pf::PolarUpdate pu = pf::peridigmPolarUpdate(Fn, F, pf::identity3(), Fn);
+  const pf::PolarUpdate pu = pf::peridigmPolarUpdate(F - Fn, F, pf::identity3(), Fn);
   EXPECT_EQ(maxAbs(pu.R - pf::identity3()), 0.0);
   EXPECT_NEAR(pu.dUnrot[4], (F[4] - Fn[4]) / F[4], 1e-15);
   auto rotation = [](double a) {  // about (1,1,1)/sqrt(3), Rodrigues
@@ -126,7 +126,7 @@ TEST(PeridigmJ2, PeridigmPolarUpdate) {
       const double s = double(k) / N;
       const Mat3 U = {1 + 0.1 * s, 0.03 * s, 0, 0.03 * s, 1 - 0.04 * s, 0.02 * s, 0, 0.02 * s, 1 + 0.05 * s};
       const Mat3 Fk = pf::mul(rotation(s * M_PI / 3), U);
-      const pf::PolarUpdate p = pf::peridigmPolarUpdate(Fp, Fk, R, V);
+      const pf::PolarUpdate p = pf::peridigmPolarUpdate(Fk - Fp, Fk, R, V);
       R = p.R, V = p.V, Fp = Fk;
     }
     return maxAbs(R - rotation(M_PI / 3));
