@@ -4,6 +4,7 @@
 // element at its node with its volume attribute), and a node set of the file as the elements that touch one of
 // its nodes. A reader fills MeshElements with the elements its part holds and MeshNodes with the coordinates of
 // the nodes they name; nothing here sees the file format.
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,6 +41,12 @@ struct MeshNodes {
 PointCloud elementPoints(const MeshElements& e, const MeshNodes& n, long long firstIndex, long long numGlobal,
                          bool planar, const DiscretizationSpec& spec, const std::string& inputFile,
                          const std::function<void(const std::string&)>& fail);
+
+// A mesh's node bounding box and the count of its elements that become points (for the size estimate).
+struct MeshExtent {
+  long long elements = 0;
+  std::array<double, 3> lo{}, hi{};
+};
 
 // Adds node set `name` to the cloud: the points whose element names a node with marked[n.find(node)] set.
 void addElementNodeSet(PointCloud& c, const std::string& name, const MeshElements& e, const MeshNodes& n,

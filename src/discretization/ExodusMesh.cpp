@@ -123,9 +123,9 @@ PointCloud readExodusSlab(const DiscretizationSpec& spec, const std::string& inp
   return c;
 }
 
-ExodusExtent exodusExtent(const DiscretizationSpec& spec, const std::string& inputFile) {
+MeshExtent exodusExtent(const DiscretizationSpec& spec, const std::string& inputFile) {
   const ExodusFile f(spec.meshFile, inputFile);
-  ExodusExtent e;
+  MeshExtent e;
   e.elements = f.summary().elements;
   e.lo.fill(HUGE_VAL), e.hi.fill(-HUGE_VAL);
   std::vector<double> x[3];

@@ -118,11 +118,12 @@ def solver_output(name):
 """
 
 
-def exodus_deck(mesh, name, extra=""):
+def exodus_deck(mesh, name, extra="", kind="Exodus", blocks="block_1 block_7"):
+    """kind: the Discretization Type (check_gmsh.py reads Gmsh meshes of the same box)."""
     return (f'<ParameterList>\n  <ParameterList name="Discretization">\n'
-            f'    <Parameter name="Type" type="string" value="Exodus"/>\n'
+            f'    <Parameter name="Type" type="string" value="{kind}"/>\n'
             f'    <Parameter name="Input Mesh File" type="string" value="{mesh}"/>\n{extra}  </ParameterList>\n'
-            + material_blocks("block_1 block_7") + conditions() + solver_output(name) + '</ParameterList>\n')
+            + material_blocks(blocks) + conditions() + solver_output(name) + '</ParameterList>\n')
 
 
 def lattice_deck(name):
@@ -140,10 +141,10 @@ def lattice_deck(name):
             + material_blocks("block_1") + bcs + solver_output(name) + '</ParameterList>\n')
 
 
-def quad_deck(mesh, name, thickness):
+def quad_deck(mesh, name, thickness, kind="Exodus"):
     t = (f'    <Parameter name="Thickness" type="double" value="{thickness!r}"/>\n' if thickness else "")
     return (f'<ParameterList>\n  <ParameterList name="Discretization">\n'
-            f'    <Parameter name="Type" type="string" value="Exodus"/>\n'
+            f'    <Parameter name="Type" type="string" value="{kind}"/>\n'
             f'    <Parameter name="Input Mesh File" type="string" value="{mesh}"/>\n{t}  </ParameterList>\n'
             '  <ParameterList name="Materials"><ParameterList name="Steel">\n'
             '    <Parameter name="Material Model" type="string" value="Elastic"/>\n'
