@@ -11,7 +11,10 @@ MshStream::MshStream(const std::string& path, std::function<void(const std::stri
 template <class T>
 T MshStream::text(const char* what) {
   T v{};
-  if (!(in_ >> v)) fail_(std::string("expected ") + what + " at byte " + std::to_string(tell()) + (in_.eof() ? " (the file ends)" : ""));
+  if (in_ >> v) return v;
+  if (in_.eof()) fail_(std::string("the file ends where ") + what + " was expected");
+  in_.clear();
+  fail_(std::string("expected ") + what + " at byte " + std::to_string(tell()));
   return v;
 }
 
