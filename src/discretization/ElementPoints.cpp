@@ -1,21 +1,11 @@
 #include "ElementPoints.hpp"
 
 #include <algorithm>
-#include <cstdio>
+#include <sstream>
 
 #include "core/InputError.hpp"
 
 namespace pf {
-
-namespace {
-
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-}  // namespace
 
 void MeshElements::add(ElementShape s, int blockId, long long labelId, const long long* first, int count,
                        double sphere) {
@@ -65,10 +55,13 @@ PointCloud elementPoints(const MeshElements& e, const MeshNodes& n, long long fi
     } else {
       g = elementGeometry(e.shape[k], corners.data());
     }
-    if (!(g.measure > 0.0))
+    if (!(g.measure > 0.0)) {
+      std::ostringstream measure;
+      measure << g.measure;
       fail("element " + std::to_string(e.label[k]) + " (block " + std::to_string(e.block[k]) + ") has " +
-           (sphere ? "volume attribute " : planar ? "area " : "volume ") + num(g.measure) +
+           (sphere ? "volume attribute " : planar ? "area " : "volume ") + measure.str() +
            (sphere ? "" : " (inverted, degenerate or misnumbered)"));
+    }
     c.gid.push_back(static_cast<int>(firstIndex + k));
     c.x.insert(c.x.end(), g.centroid.begin(), g.centroid.end());
     c.volume.push_back(planar ? g.measure * spec.thickness : g.measure);

@@ -4,7 +4,9 @@
 // element at its node with its volume attribute), and a node set of the file as the elements that touch one of
 // its nodes. A reader fills MeshElements with the elements its part holds and MeshNodes with the coordinates of
 // the nodes they name; nothing here sees the file format.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -45,7 +47,10 @@ PointCloud elementPoints(const MeshElements& e, const MeshNodes& n, long long fi
 // A mesh's node bounding box and the count of its elements that become points (for the size estimate).
 struct MeshExtent {
   long long elements = 0;
-  std::array<double, 3> lo{}, hi{};
+  std::array<double, 3> lo{HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi{-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  void include(const double* p) {
+    for (int a = 0; a < 3; ++a) lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
+  }
 };
 
 // Adds node set `name` to the cloud: the points whose element names a node with marked[n.find(node)] set.

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <cmath>
 
 #include "ElementPoints.hpp"
 #include "core/InputError.hpp"
@@ -127,12 +126,13 @@ MeshExtent exodusExtent(const DiscretizationSpec& spec, const std::string& input
   const ExodusFile f(spec.meshFile, inputFile);
   MeshExtent e;
   e.elements = f.summary().elements;
-  e.lo.fill(HUGE_VAL), e.hi.fill(-HUGE_VAL);
   std::vector<double> x[3];
   for (long long start = 1; start <= f.summary().nodes; start += kChunk) {
-    readCoordinateChunk(f, start, x);
-    for (int a = 0; a < 3; ++a)
-      for (double v : x[a]) e.lo[a] = std::min(e.lo[a], v), e.hi[a] = std::max(e.hi[a], v);
+    const long long count = readCoordinateChunk(f, start, x);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
+      const double p[3] = {x[0][k], x[1][k], x[2][k]};
+      e.include(p);
+    }
   }
   return e;
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <climits>
-#include <cmath>
 #include <stdexcept>
 
 #include "ElementPoints.hpp"
@@ -114,10 +113,7 @@ MeshExtent gmshExtent(const DiscretizationSpec& spec, const std::string& inputFi
   const GmshFile f(spec.meshFile, inputFile);
   MeshExtent x;
   x.elements = f.summary().elements;
-  x.lo.fill(HUGE_VAL), x.hi.fill(-HUGE_VAL);
-  f.forEachNode([&](long long, const double* p) {
-    for (int a = 0; a < 3; ++a) x.lo[a] = std::min(x.lo[a], p[a]), x.hi[a] = std::max(x.hi[a], p[a]);
-  });
+  f.forEachNode([&](long long, const double* p) { x.include(p); });
   return x;
 }
 

@@ -18,11 +18,8 @@ The meshes are committed (made from the .geo files beside them by gmsh 4.8; the 
 usage: check_gmsh.py PERIFORGE MPIRUN [MPIRUN ARGS...]
 Prints what it measures; exits 1 on any miss.
 """
-import concurrent.futures
 import os
 import sys
-import tempfile
-import time
 
 import numpy as np
 
@@ -223,7 +220,7 @@ def bad_meshes(work):
         "inverted.msh": edited("inverted.msh", last, " ".join([hex_nodes[0]] + hex_nodes[5:9] + hex_nodes[1:5])),
         "absent.msh": edited("absent.msh", face, " ".join(face_nodes[:2] + ["9999"] + face_nodes[3:])),
     }
-    deck = lambda mesh: ce.exodus_deck(mesh, "bad", kind="Gmsh", blocks="block_1 top")
+    deck = lambda mesh: ce.exodus_deck(mesh, "bad", kind="Gmsh", blocks="block_1 top")  # run as bad.xml
     words = ["Input Mesh File"]
     return [
         ("missing mesh file", deck("no_such_mesh.msh"), words + ["no_such_mesh.msh"]),
@@ -236,47 +233,11 @@ def bad_meshes(work):
     ]
 
 
-def check_errors(exe, mpirun, work, pool):
-    failures = []
-    jobs = []
-    for k, (name, text, words) in enumerate(bad_meshes(work)):
-        for np_ in (1, 2):
-            label = f"error{k}_np{np_}"
-            jobs.append((name, np_, words, label, job(pool, mpirun, exe, work, label, text, np_)))
-    for name, np_, words, label, j in jobs:
-        rc, out, err, secs = j.result()
-        lines = ce.error_text_lines(err)
-        msg = lines[0] if lines else ""
-        problems = []
-        if rc is None or rc == 0 or rc < 0 or rc > 128:
-            problems.append(f"exit {rc} (want an input error's non-zero exit)")
-        if len(lines) != 1:
-            problems.append(f"{len(lines)} lines of error text (want 1): {lines}")
-        if not msg.startswith("periforge: input error: ") or "deck.xml" not in msg:
-            problems.append("the line is not an input error naming deck.xml")
-        problems += [f"the line lacks '{w}'" for w in words if w not in msg]
-        print(f"  [{name}] np {np_}: exit {rc} in {secs:.1f} s: {'ok' if not problems else 'FAIL: ' + '; '.join(problems)}"
-              f"\n      {msg}")
-        failures += [f"{name} np {np_}: {p}" for p in problems]
-    return failures
-
-
 def main(exe, mpirun):
-    start = time.monotonic()
-    exe = os.path.abspath(exe)
-    failures = []
-    with tempfile.TemporaryDirectory(prefix="check_gmsh_") as work, \
-            concurrent.futures.ThreadPoolExecutor(max_workers=4) as pool:
-        print("(a) Gmsh hex meshes (ASCII, binary) vs the PdQuickGrid lattice, 6x3x3 cells, np 1 and 2:")
-        failures += check_box(exe, mpirun, work, pool)
-        print("(a') Gmsh quadrilaterals with Thickness, and tetrahedra:")
-        failures += check_quad_and_tets(exe, mpirun, work, pool)
-        print("(b) bad meshes:")
-        failures += check_errors(exe, mpirun, work, pool)
-    print(f"{'FAIL' if failures else 'PASS'} ({len(failures)} misses) in {time.monotonic() - start:.1f} s")
-    for f in failures:
-        print("  MISS: " + f)
-    return 1 if failures else 0
+    return ce.run_checks(exe, mpirun, "check_gmsh_", [
+        ("(a) Gmsh hex meshes (ASCII, binary) vs the PdQuickGrid lattice, 6x3x3 cells, np 1 and 2:", check_box),
+        ("(a') Gmsh quadrilaterals with Thickness, and tetrahedra:", check_quad_and_tets),
+        ("(b) bad meshes:", lambda exe, mpirun, work, pool: ce.check_errors(exe, mpirun, work, pool, bad_meshes(work)))])
 
 
 if __name__ == "__main__":
