@@ -10,6 +10,7 @@
 
 #include "CylinderGenerator.hpp"
 #include "ExodusMesh.hpp"
+#include "GmshMesh.hpp"
 #include "core/InputError.hpp"
 #include "core/Words.hpp"
 
@@ -266,6 +267,7 @@ PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& i
     return c;
   }
   if (d.type == T::Exodus) return readExodusSlab(d, inputFile, part, parts);
+  if (d.type == T::Gmsh) return readGmshSlab(d, inputFile, part, parts);
   // Two passes of the generator: the first counts the cloud, the second keeps this part's slab of it.
   auto run = [&](PointSink& sink) {
     switch (d.type) {
@@ -274,7 +276,8 @@ PointCloud buildDiscretization(const DiscretizationSpec& d, const std::string& i
       case T::BoxWithHoles: generator(d, inputFile, sink); break;
       case T::Cylinder: cylinder(d, inputFile, sink); break;
       case T::TextFile:
-      case T::Exodus: break;
+      case T::Exodus:
+      case T::Gmsh: break;
     }
   };
   PointCloud counted;

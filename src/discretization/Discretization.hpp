@@ -1,7 +1,8 @@
 #pragma once
 // Builds the point cloud from a validated DiscretizationSpec: Peridigm's PdQuickGrid and Text File, and
 // Periforge's "Rectangle With Holes" (2D) and "Box With Holes" (3D) generators with optional fictitious
-// boundary layers, "Cylinder" (CylinderGenerator.hpp) and Peridigm's "Exodus" meshes (ExodusMesh.hpp). A rank builds one slab of the cloud order (part
+// boundary layers, "Cylinder" (CylinderGenerator.hpp), Peridigm's "Exodus" meshes (ExodusMesh.hpp) and Gmsh's
+// (GmshMesh.hpp). A rank builds one slab of the cloud order (part
 // `part` of `parts`), never the whole; a Text File is read in byte ranges. Bad mesh files are InputErrors.
 #include <array>
 #include <functional>

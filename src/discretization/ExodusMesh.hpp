@@ -6,20 +6,15 @@
 // in file order (their gids) with ex_get_partial_*: the coordinates and node sets stream through in chunks, so
 // no rank holds the whole mesh. Bad meshes (unknown element type, non-positive volume, 2D elements without a
 // Thickness, node ids out of range) are InputErrors naming the mesh file and the element.
-#include <array>
 #include <string>
 
-#include "Discretization.hpp"
+#include "ElementPoints.hpp"
 
 namespace pf {
 
 PointCloud readExodusSlab(const DiscretizationSpec& spec, const std::string& inputFile, int part, int parts);
 
 // The mesh nodes' bounding box (coordinates read in chunks) and the element count, for the size estimate.
-struct ExodusExtent {
-  long long elements = 0;
-  std::array<double, 3> lo{}, hi{};
-};
-ExodusExtent exodusExtent(const DiscretizationSpec& spec, const std::string& inputFile);
+MeshExtent exodusExtent(const DiscretizationSpec& spec, const std::string& inputFile);
 
 }  // namespace pf

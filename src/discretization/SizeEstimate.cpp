@@ -10,6 +10,7 @@
 #include "CylinderGenerator.hpp"
 #include "Discretization.hpp"
 #include "ExodusMesh.hpp"
+#include "GmshMesh.hpp"
 #include "core/InputError.hpp"
 
 namespace pf {
@@ -138,10 +139,12 @@ TextMeshScan scanMesh(const Deck& deck) {
 
 // A mesh file has no grid: the family is that of a cubic lattice with the mean cell volume, or for a flat
 // mesh (all z equal) of a square lattice filling the bounding rectangle.
-// An Exodus mesh: its element count and node box; the total volume is taken as the box's (an upper bound, so
-// the estimate's spacing errs large and its family small for a body with holes).
-TextMeshScan scanExodus(const Deck& deck) {
-  const ExodusExtent x = exodusExtent(deck.discretization, deck.file);
+// An Exodus or Gmsh mesh: its element count and node box; the total volume is taken as the box's (an upper
+// bound, so the estimate's spacing errs large and its family small for a body with holes).
+TextMeshScan scanElementMesh(const Deck& deck) {
+  const MeshExtent x = deck.discretization.type == DiscretizationSpec::Type::Gmsh
+                           ? gmshExtent(deck.discretization, deck.file)
+                           : exodusExtent(deck.discretization, deck.file);
   TextMeshScan s;
   s.points = static_cast<double>(x.elements);
   s.volume = 1.0;
@@ -153,8 +156,7 @@ TextMeshScan scanExodus(const Deck& deck) {
 }
 
 SizeEstimate meshFileEstimate(const Deck& deck) {
-  const TextMeshScan s =
-      deck.discretization.type == DiscretizationSpec::Type::Exodus ? scanExodus(deck) : scanMesh(deck);
+  const TextMeshScan s = deck.discretization.isElementMesh() ? scanElementMesh(deck) : scanMesh(deck);
   SizeEstimate e;
   e.points = s.points;
   e.meshFile = true;
@@ -214,7 +216,7 @@ double latticeFamily(const std::array<double, 3>& cell, const std::array<double,
 SizeEstimate estimateSize(const Deck& deck) {
   const DiscretizationSpec& d = deck.discretization;
   SizeEstimate e;
-  if (d.type == DiscretizationSpec::Type::TextFile || d.type == DiscretizationSpec::Type::Exodus) {
+  if (d.type == DiscretizationSpec::Type::TextFile || d.isElementMesh()) {
     e = meshFileEstimate(deck);
   } else {
     const GridShape g = d.type == DiscretizationSpec::Type::QuickGrid ? quickGridShape(d)
@@ -279,8 +281,7 @@ std::string bytesText(double bytes) {
 void checkSize(const Deck& deck, const SizeEstimate& e, int np, double limit, const std::string& limitName) {
   const DiscretizationSpec& d = deck.discretization;
   const std::string change = d.type == DiscretizationSpec::Type::QuickGrid  ? "fewer 'Number Points'"
-                             : d.type == DiscretizationSpec::Type::TextFile ||
-                                       d.type == DiscretizationSpec::Type::Exodus
+                             : d.type == DiscretizationSpec::Type::TextFile || d.isElementMesh()
                                    ? "a coarser mesh"
                                                                              : "a larger 'Spacing'";
   char counts[160];

@@ -26,7 +26,8 @@ using S = ParameterSpec;
 
 std::vector<ParameterSpec> blockSpecs() {
   return {S::text("Block Names",
-                  "space-separated `block_N` (N ≥ 1); a block belongs to one group only. Peridigm's `default` "
+                  "space-separated `block_N` (N ≥ 1; a Gmsh mesh's block also by its physical name); a block "
+                  "belongs to one group only. Peridigm's `default` "
                   "(alone, in one group at most): every block of the discretization that no other group names")
               .need(),
           S::text("Material", "a sub-list name of `Materials`").need(), S::real("Horizon", "horizon δ").need().positive(),
@@ -72,7 +73,8 @@ std::vector<MaterialSpec> parseMaterials(const PL& deck, const std::string& file
 }
 
 std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<MaterialSpec>& materials,
-                                        const std::vector<DamageModelSpec>& damageModels, const std::string& file) {
+                                        const std::vector<DamageModelSpec>& damageModels, const std::string& file,
+                                        const std::vector<std::pair<std::string, int>>& aliases) {
   const PL& blocks = requireSublist(deck, "Blocks", file, "top level");
   std::vector<std::string> matNames;
   for (const MaterialSpec& m : materials) matNames.push_back(m.name);
@@ -111,8 +113,12 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
         g.isDefault = true;
         continue;
       }
-      const int id = blockNumber(n);
-      if (id == 0) fail(file, bpath, "'Block Names' entry '" + n + "' is not of the form block_<positive integer>");
+      int id = blockNumber(n);
+      for (const auto& [alias, tag] : aliases)
+        if (id == 0 && alias == n) id = tag;
+      if (id == 0)
+        fail(file, bpath, "'Block Names' entry '" + n + "' is not of the form block_<positive integer>" +
+                              (aliases.empty() ? std::string() : " nor a physical name of the mesh's blocks"));
       if (!seen.insert("block_" + std::to_string(id)).second)
         fail(file, bpath, "'Block Names': '" + n + "' is assigned to two block groups");
       g.blockIds.push_back(id);

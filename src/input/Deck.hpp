@@ -5,6 +5,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/BondFilter.hpp"
@@ -23,8 +24,9 @@ struct HoleSpec {
 };
 
 struct DiscretizationSpec {
-  enum class Type { QuickGrid, TextFile, RectangleWithHoles, BoxWithHoles, Cylinder, Exodus };
+  enum class Type { QuickGrid, TextFile, RectangleWithHoles, BoxWithHoles, Cylinder, Exodus, Gmsh };
   Type type = Type::QuickGrid;
+  bool isElementMesh() const { return type == Type::Exodus || type == Type::Gmsh; }  // one point per element
   Influence influence = Influence::One;
   bool partialVolume = false;
   bool omitBondsBetweenBlocks = false;  // Peridigm's "Omit Bonds Between Blocks" = "All"
@@ -36,15 +38,17 @@ struct DiscretizationSpec {
   std::array<double, 3> origin{};
   std::array<double, 3> length{};
   std::array<int, 3> count{};
-  // Text File, Exodus: the mesh file, resolved against the deck's directory.
+  // Text File, Exodus, Gmsh: the mesh file, resolved against the deck's directory.
   std::string meshFile;
-  // Exodus: the genesis file's node-set names (read from its header when the deck is parsed), and its element count.
+  // Exodus, Gmsh: the mesh's node-set names (read from the file when the deck is parsed), its element count, and
+  // (Gmsh) the physical names of its blocks, aliases of block_<tag> in Block Names.
   std::vector<std::string> meshNodeSets;
   long long meshElements = 0;
+  std::vector<std::pair<std::string, int>> meshBlockNames;
   // Rectangle / Box With Holes (origin and length above; z unused for the rectangle).
   double spacing = 0.0;
   bool gridNodes = false;           // "Grid" = "Nodes" (else cell centres)
-  double thickness = 0.0;           // rectangle; Exodus meshes of 2D elements
+  double thickness = 0.0;           // rectangle; Exodus and Gmsh meshes of 2D elements
   std::vector<HoleSpec> holes;
   std::vector<std::string> layers;  // faces with a fictitious layer: "Left", "Right", ...
   double layerWidth = 0.0;          // "Layer Width", or the largest block horizon

@@ -119,7 +119,7 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
   deck.discretization = parseDiscretization(requireSublist(p, "Discretization", file, "top level"), file, directory);
   deck.materials = parseMaterials(p, file);
   deck.damageModels = parseDamageModels(p, file, directory);
-  deck.blocks = parseBlocks(p, deck.materials, deck.damageModels, file);
+  deck.blocks = parseBlocks(p, deck.materials, deck.damageModels, file, deck.discretization.meshBlockNames);
   requireOneThickness(deck);
   applyDefaultLayerWidth(deck.discretization, deck.maxHorizon(), file);
   const std::vector<std::string> generated = generatedNodeSetNames(deck.discretization);

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "ExodusFile.hpp"
+#include "GmshFile.hpp"
 #include "Input.hpp"
 #include "Sections.hpp"
 
@@ -11,7 +12,7 @@ namespace {
 
 using S = ParameterSpec;
 const std::vector<std::string> kTypes = {"PdQuickGrid", "Text File", "Rectangle With Holes", "Box With Holes",
-                                         "Cylinder", "Exodus"};
+                                         "Cylinder", "Exodus", "Gmsh"};
 
 // "x", "y", "z" or three numbers, not all zero -> a unit vector.
 std::array<double, 3> holeAxis(const std::string& a, const std::string& file, const std::string& path) {
@@ -96,12 +97,18 @@ std::vector<ParameterSpec> discretizationSpecs(const std::string& type) {
                                            "bonds cross block boundaries").byDefault("None").oneOf({"All", "None"})};
   if (type == "Text File")
     s.push_back(S::text("Input Mesh File", "file of lines `x y z block_id volume`; `#` starts a comment").need());
-  if (type == "Exodus") {
+  if (type == "Exodus")
     s.push_back(S::text("Input Mesh File", "Exodus II genesis file: one point per element at its centroid with its "
                                            "volume; blocks `block_<id>`; the file's node sets by name").need());
+  if (type == "Gmsh")
+    s.push_back(S::text("Input Mesh File", "Gmsh MSH 4.1 file (ASCII or binary): one point per element of its "
+                                           "highest dimension at its centroid with its volume; blocks `block_<tag>` "
+                                           "of the physical groups of that dimension (a physical name is an alias); "
+                                           "a lower-dimension physical group is a node set, by its physical name or "
+                                           "`nodelist_<tag>`").need());
+  if (type == "Exodus" || type == "Gmsh")
     s.push_back(S::real("Thickness", "out-of-plane thickness of a mesh of 2D elements (QUAD, TRI): volume = area·"
                                      "Thickness").positive());
-  }
   if (type == "Rectangle With Holes" || type == "Box With Holes") {
     const bool box = type == "Box With Holes";
     for (const char* a : {"X", "Y", "Z"}) {
@@ -158,7 +165,7 @@ namespace {
 // that bond vectors keep at least three correct digits.
 void requireResolvableGrid(const DiscretizationSpec& s, const std::string& file, const std::string& path) {
   using T = DiscretizationSpec::Type;
-  if (s.type == T::TextFile || s.type == T::Exodus) return;
+  if (s.type == T::TextFile || s.isElementMesh()) return;
   const char* names[3][2] = {{"X Origin", "X Center"}, {"Y Origin", "Y Center"}, {"Z Origin", "Z Center"}};
   for (int a = 0; a < 3; ++a) {
     const double extent = s.type == T::Cylinder ? s.cylinderLength + s.radius : s.length[a];
@@ -169,6 +176,25 @@ void requireResolvableGrid(const DiscretizationSpec& s, const std::string& file,
                          " puts the points so far from zero that their spacing " + numberText(spacing) +
                          " is below double precision's resolution there (keep coordinates within 1e12 spacings of zero)");
   }
+}
+
+// An element mesh's header only: the node-set names for the conditions to name, the element count and (Gmsh) the
+// block names.
+void readMeshNames(DiscretizationSpec& s, const std::string& file, const std::string& path) {
+  if (s.type == DiscretizationSpec::Type::Exodus) {
+    const ExodusFile mesh(s.meshFile, file);
+    for (const ExodusNodeSet& n : mesh.summary().nodeSets)
+      if (n.nodes > 0) s.meshNodeSets.push_back(n.name);  // an empty set names no element (the reader skips it)
+    s.meshElements = mesh.summary().elements;
+  } else {
+    const GmshFile mesh(s.meshFile, file);
+    for (const GmshNodeSet& n : mesh.summary().nodeSets) s.meshNodeSets.push_back(n.name);
+    s.meshElements = mesh.summary().elements;
+    s.meshBlockNames = mesh.summary().blockNames;
+  }
+  if (s.meshNodeSets.size() > 50)  // the point exchange carries set membership as bits of one double
+    fail(file, path + "/Input Mesh File", "the mesh '" + s.meshFile + "' has " + std::to_string(s.meshNodeSets.size()) +
+                                              " non-empty node sets; Periforge reads at most 50");
 }
 
 }  // namespace
@@ -204,17 +230,11 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   } else if (type == "Text File") {
     s.type = DiscretizationSpec::Type::TextFile;
     s.meshFile = resolvePath(v.text("Input Mesh File"), dir);
-  } else if (type == "Exodus") {
-    s.type = DiscretizationSpec::Type::Exodus;
+  } else if (type == "Exodus" || type == "Gmsh") {
+    s.type = type == "Exodus" ? DiscretizationSpec::Type::Exodus : DiscretizationSpec::Type::Gmsh;
     s.meshFile = resolvePath(v.text("Input Mesh File"), dir);
     s.thickness = v.get("Thickness", 0.0);
-    const ExodusFile mesh(s.meshFile, file);  // the header only: node-set names for the conditions to name
-    for (const ExodusNodeSet& n : mesh.summary().nodeSets)
-      if (n.nodes > 0) s.meshNodeSets.push_back(n.name);  // an empty set names no element (the reader skips it)
-    if (s.meshNodeSets.size() > 50)  // the point exchange carries set membership as bits of one double
-      fail(file, path + "/Input Mesh File", "the mesh '" + s.meshFile + "' has " + std::to_string(s.meshNodeSets.size()) +
-                                                " non-empty node sets; Periforge reads at most 50");
-    s.meshElements = mesh.summary().elements;
+    readMeshNames(s, file, path);
   } else {
     s.type = type == "Box With Holes" ? DiscretizationSpec::Type::BoxWithHoles
                                       : DiscretizationSpec::Type::RectangleWithHoles;
@@ -227,7 +247,7 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
   if (d.isSublist("Bond Filters"))
     s.bondFilters = parseBondFilters(d.sublist("Bond Filters"), file, path + "/Bond Filters", dir, false);
   s.boxNeighbourhood = s.type == DiscretizationSpec::Type::QuickGrid && !v.has("NeighborhoodType") && !s.partialVolume;
-  if (s.partialVolume && (s.type == DiscretizationSpec::Type::TextFile || s.type == DiscretizationSpec::Type::Exodus))
+  if (s.partialVolume && (s.type == DiscretizationSpec::Type::TextFile || s.isElementMesh()))
     fail(file, path, "'Partial Volume' needs a regular grid (PdQuickGrid, Rectangle With Holes, Box With "
                      "Holes): a " + type + " discretization has no cells to intersect with the horizon");
   return s;

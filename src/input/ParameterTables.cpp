@@ -32,6 +32,7 @@ std::vector<ParameterTable> parameterTables() {
       {"pdquickgrid", "Discretization/TensorProduct3DMeshGenerator (Type = PdQuickGrid)", quickGridSpecs()},
       {"text-file", "Discretization (Type = Text File), besides the common ones", {}},
       {"exodus", "Discretization (Type = Exodus), besides the common ones", {}},
+      {"gmsh", "Discretization (Type = Gmsh), besides the common ones", {}},
       {"rectangle", "Discretization (Type = Rectangle With Holes), besides the common ones", {}},
       {"box", "Discretization (Type = Box With Holes), besides the common ones", {}},
       {"cylinder", "Discretization (Type = Cylinder), besides the common ones", {}},
@@ -63,7 +64,7 @@ std::vector<ParameterTable> parameterTables() {
       {"compute", "Compute Class Parameters/<any name>", computeSpecs()}};
   const std::size_t common = discretizationSpecs("").size();
   for (auto& [key, type] : std::vector<std::pair<std::string, std::string>>{
-           {"text-file", "Text File"}, {"exodus", "Exodus"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"},
+           {"text-file", "Text File"}, {"exodus", "Exodus"}, {"gmsh", "Gmsh"}, {"rectangle", "Rectangle With Holes"}, {"box", "Box With Holes"},
                                              {"cylinder", "Cylinder"}})
     for (ParameterTable& x : t)
       if (x.key == key) {

@@ -30,8 +30,10 @@ std::vector<ParameterSpec> blockSpecs();
 int blockNumber(const std::string& name);  // "block_<positive integer>" -> the integer, else 0
 MaterialSpec parseMaterial(const PL& m, const std::string& name, const std::string& file);
 std::vector<MaterialSpec> parseMaterials(const PL& deck, const std::string& file);
+// aliases: other names of blocks (a Gmsh mesh's physical names) -> block id.
 std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<MaterialSpec>& materials,
-                                        const std::vector<DamageModelSpec>& damageModels, const std::string& file);
+                                        const std::vector<DamageModelSpec>& damageModels, const std::string& file,
+                                        const std::vector<std::pair<std::string, int>>& aliases = {});
 
 // Damage Models (optional; before Blocks, which name them).
 std::vector<ParameterSpec> criticalStretchSpecs();

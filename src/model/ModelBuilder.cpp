@@ -148,12 +148,12 @@ void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, 
     }
 }
 
-// A Text File mesh, or an Exodus mesh of 3D elements, is 3D unless it is flat (every point at z = 0: for Exodus,
+// A Text File mesh, or an Exodus or Gmsh mesh of 3D elements, is 3D unless it is flat (every point at z = 0: for Exodus,
 // one layer of elements centred on z = 0, as Peridigm's 2D decks mesh a plate) and every block's material is 2D:
 // then it is the 2D discretization those materials need (the volumes already hold the thickness).
 void adoptFlatMesh(const DiscretizationSpec& spec, PointCloud& cloud, const std::map<int, BlockSpec>& blocks,
                    const Communicator& comm) {
-  const bool file = spec.type == DiscretizationSpec::Type::TextFile || spec.type == DiscretizationSpec::Type::Exodus;
+  const bool file = spec.type == DiscretizationSpec::Type::TextFile || spec.isElementMesh();
   if (!file || cloud.planar) return;
   double raised = 0.0;
   for (int p = 0; p < cloud.size(); ++p)

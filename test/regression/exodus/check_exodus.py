@@ -118,11 +118,12 @@ def solver_output(name):
 """
 
 
-def exodus_deck(mesh, name, extra=""):
+def exodus_deck(mesh, name, extra="", kind="Exodus", blocks="block_1 block_7"):
+    """kind: the Discretization Type (check_gmsh.py reads Gmsh meshes of the same box)."""
     return (f'<ParameterList>\n  <ParameterList name="Discretization">\n'
-            f'    <Parameter name="Type" type="string" value="Exodus"/>\n'
+            f'    <Parameter name="Type" type="string" value="{kind}"/>\n'
             f'    <Parameter name="Input Mesh File" type="string" value="{mesh}"/>\n{extra}  </ParameterList>\n'
-            + material_blocks("block_1 block_7") + conditions() + solver_output(name) + '</ParameterList>\n')
+            + material_blocks(blocks) + conditions() + solver_output(name) + '</ParameterList>\n')
 
 
 def lattice_deck(name):
@@ -140,10 +141,10 @@ def lattice_deck(name):
             + material_blocks("block_1") + bcs + solver_output(name) + '</ParameterList>\n')
 
 
-def quad_deck(mesh, name, thickness):
+def quad_deck(mesh, name, thickness, kind="Exodus"):
     t = (f'    <Parameter name="Thickness" type="double" value="{thickness!r}"/>\n' if thickness else "")
     return (f'<ParameterList>\n  <ParameterList name="Discretization">\n'
-            f'    <Parameter name="Type" type="string" value="Exodus"/>\n'
+            f'    <Parameter name="Type" type="string" value="{kind}"/>\n'
             f'    <Parameter name="Input Mesh File" type="string" value="{mesh}"/>\n{t}  </ParameterList>\n'
             '  <ParameterList name="Materials"><ParameterList name="Steel">\n'
             '    <Parameter name="Material Model" type="string" value="Elastic"/>\n'
@@ -390,10 +391,11 @@ def error_cases(work):
     ]
 
 
-def check_errors(exe, mpirun, work, pool):
+def check_errors(exe, mpirun, work, pool, cases=None):
+    """cases: (name, deck text, words) as error_cases gives them (check_gmsh.py passes its own)."""
     failures = []
     jobs = []
-    for k, (name, text, words) in enumerate(error_cases(work)):
+    for k, (name, text, words) in enumerate(error_cases(work) if cases is None else cases):
         for np_ in (1, 2):
             d = os.path.join(work, f"error{k}_np{np_}")
             os.makedirs(d)
@@ -429,22 +431,27 @@ def check_errors(exe, mpirun, work, pool):
     return failures
 
 
-def main(exe, mpirun):
+def run_checks(exe, mpirun, prefix, sections):
+    """Runs each (title, check(exe, mpirun, work, pool) -> failures) in one temporary directory; -> exit code."""
     start = time.monotonic()
     exe = os.path.abspath(exe)
     failures = []
-    with tempfile.TemporaryDirectory(prefix="check_exodus_") as work, \
+    with tempfile.TemporaryDirectory(prefix=prefix) as work, \
             concurrent.futures.ThreadPoolExecutor(max_workers=4) as pool:
-        print("(a) Exodus mesh vs PdQuickGrid lattice, 6x3x3 cells, np 1 and 2:")
-        failures += check_equivalence(exe, mpirun, work, pool)
-        print("(a') 2D QUAD4 mesh with Thickness:")
-        failures += check_quad(exe, mpirun, work, pool)
-        print("(b) bad meshes:")
-        failures += check_errors(exe, mpirun, work, pool)
+        for title, check in sections:
+            print(title)
+            failures += check(exe, mpirun, work, pool)
     print(f"{'FAIL' if failures else 'PASS'} ({len(failures)} misses) in {time.monotonic() - start:.1f} s")
     for f in failures:
         print("  MISS: " + f)
     return 1 if failures else 0
+
+
+def main(exe, mpirun):
+    return run_checks(exe, mpirun, "check_exodus_", [
+        ("(a) Exodus mesh vs PdQuickGrid lattice, 6x3x3 cells, np 1 and 2:", check_equivalence),
+        ("(a') 2D QUAD4 mesh with Thickness:", check_quad),
+        ("(b) bad meshes:", check_errors)])
 
 
 if __name__ == "__main__":
