@@ -107,8 +107,8 @@ std::vector<ParameterSpec> CorrespondenceMaterial::commonParameters(RateRule byD
               "(F - F_n)/dt otherwise), its first-order polar update and thermal increment; 'Midpoint': Periforge's, "
               "(F - F_n) F_mid^-1/dt with the second-order Flanagan-Taylor update (a rigid rotation never stresses, "
               "(1 + alpha dT) I is stress-free). Default: 'End Of Step' for Peridigm's models (Elastic, Elastic "
-              "Plastic, Isotropic Hardening Correspondence), 'Midpoint' for Viscoplastic and Drucker Prager "
-              "Correspondence (docs/materials.md)")
+              "Plastic, Isotropic Hardening, Viscoplastic Needleman Correspondence), 'Midpoint' for Viscoplastic "
+              "and Drucker Prager Correspondence (docs/materials.md)")
           .oneOf({"End Of Step", "Midpoint"})
           .byDefault(byDefault == RateRule::EndOfStep ? "End Of Step" : "Midpoint"),
   };
@@ -281,7 +281,7 @@ void CorrespondenceMaterial::stressUpdate(const FamilyView& fam, StateStore& sta
                                           std::vector<Mat3>& de, std::vector<Mat3>& tau) const {
   writeRateOfDeformation(fam, state, de, dt);
   if (alpha_ != 0.0) subtractThermalIncrement(fam, state, de);
-  updateStress(fam, state, tauN, de, tau);
+  updateStress(fam, state, tauN, de, dt, tau);
   writeCauchyStress(fam, state, R, tau);
 }
 

@@ -65,10 +65,11 @@ class CorrespondenceMaterial : public Material {
 
  protected:
   // The constitutive update of the owned nodes [fam.begin, fam.end), in the unrotated frame: from the
-  // committed stress tauN[k] and the unrotated strain increment de[k] = d dt (k = i - fam.begin) to tau[k].
-  // Reads and writes the model's own state; may throw ConstitutiveFailure.
+  // committed stress tauN[k] and the unrotated strain increment de[k] = d dt[k] (k = i - fam.begin; dt[k] the time
+  // since the node's last commit) to tau[k]. Reads and writes the model's own state; may throw ConstitutiveFailure.
   virtual void updateStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& tauN,
-                            const std::vector<Mat3>& de, std::vector<Mat3>& tau) const = 0;
+                            const std::vector<Mat3>& de, const std::vector<double>& dt,
+                            std::vector<Mat3>& tau) const = 0;
   virtual std::vector<StateSpec> modelStateSpecs() const { return {}; }
 
   // Hooke's law on an increment: lambda tr(de) I + 2 mu de = K tr(de) I + 2 mu dev(de).

@@ -48,7 +48,7 @@ std::vector<StateSpec> DruckerPragerCorrespondenceMaterial::modelStateSpecs() co
 
 void DruckerPragerCorrespondenceMaterial::updateStress(const FamilyView& fam, StateStore& state,
                                                        const std::vector<Mat3>& tauN, const std::vector<Mat3>& de,
-                                                       std::vector<Mat3>& tau) const {
+                                                       const std::vector<double>&, std::vector<Mat3>& tau) const {
   const double* xiN = state.committed("Equivalent_Plastic_Strain");
   double* xi = state.trial("Equivalent_Plastic_Strain");
   double* m = state.trial("Hardening_Parameter");

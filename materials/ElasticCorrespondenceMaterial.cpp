@@ -17,7 +17,8 @@ MaterialEntry ElasticCorrespondenceMaterial::entry() {
 }
 
 void ElasticCorrespondenceMaterial::updateStress(const FamilyView&, StateStore&, const std::vector<Mat3>& tauN,
-                                                 const std::vector<Mat3>& de, std::vector<Mat3>& tau) const {
+                                                 const std::vector<Mat3>& de, const std::vector<double>&,
+                                                 std::vector<Mat3>& tau) const {
   for (std::size_t k = 0; k < tau.size(); ++k) tau[k] = tauN[k] + elasticIncrement(de[k]);
 }
 

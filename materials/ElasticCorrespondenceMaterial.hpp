@@ -13,7 +13,8 @@ class ElasticCorrespondenceMaterial : public CorrespondenceMaterial {
 
  protected:
   void updateStress(const FamilyView& fam, StateStore& state, const std::vector<Mat3>& tauN,
-                    const std::vector<Mat3>& de, std::vector<Mat3>& tau) const override;
+                    const std::vector<Mat3>& de, const std::vector<double>& dt,
+                    std::vector<Mat3>& tau) const override;
 };
 
 }  // namespace pf

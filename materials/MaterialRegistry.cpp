@@ -25,6 +25,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticCorrespondenceMaterial::entry(),
       ElasticPlasticCorrespondenceMaterial::entry(),
       ElasticPlasticCorrespondenceMaterial::hardeningEntry(),
+      ElasticPlasticCorrespondenceMaterial::needlemanEntry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
       DiffusionMaterial::entry(),

@@ -66,4 +66,46 @@ PeridigmJ2Step peridigmIsotropicHardening(const Mat3& tauN, const Mat3& de, doub
   return {t.tau, eqpsN};
 }
 
+double NeedlemanLaw::flowStress(double Y, double dl, double eps, double dt) const {
+  const double hardening = Y * std::pow(1.0 + eps / e0, n) / (1.0 + std::pow(eps / e1, 2.0));
+  return hardening * std::pow(std::sqrt(2.0 / 3.0) * dl / dt / rate0, m);
+}
+
+namespace {
+
+// Peridigm's bisection for the Needleman multiplier (see the header), with its iteration bound.
+double needlemanMultiplier(const NeedlemanLaw& law, double Y, double eqpsN, double along, double normN, double G,
+                           double dt) {
+  auto residual = [&](double dl) {
+    return along - dl - 1.0 / 2.0 / G * (std::sqrt(2.0 / 3.0) * law.flowStress(Y, dl, eqpsN + dl, dt) - normN);
+  };
+  double a = 0.0, b = 1.0, c = 0.5;
+  for (int iter = 0; iter < 100000; ++iter) {
+    const double fb = residual(b), fc = residual(c);
+    // Peridigm's test: the same sign at b and c moves b, otherwise a.
+    if ((fb > 0.0 && fc > 0.0) || (fb < 0.0 && fc < 0.0))
+      b = c;
+    else
+      a = c;
+    const double previous = c;
+    c = (a + b) / 2.0;
+    if (std::fabs(c - previous) / std::fabs(c) < 1.0e-6) break;
+  }
+  return c;
+}
+
+}  // namespace
+
+PeridigmJ2Step peridigmNeedleman(const Mat3& tauN, const Mat3& de, double eqpsN, double K, double G, double Y,
+                                 const NeedlemanLaw& law, double dt) {
+  const Trial t = trial(tauN, de, K, G);
+  if (t.vm < Y || dt <= 0.0) return {t.tau, eqpsN};
+  const Mat3 sN = deviator(tauN);
+  const double along = ddot(t.s, t.devDe) / std::max(1.0e-20, t.norm);
+  const double dl = needlemanMultiplier(law, Y, eqpsN, along, std::sqrt(ddot(sN, sN)), G, dt);
+  const double yf = law.flowStress(Y, dl, eqpsN + std::sqrt(2.0 / 3.0) * dl, dt);
+  if (t.vm > yf) return plasticReturn(t, tauN, eqpsN, G, yf);
+  return {t.tau, eqpsN};
+}
+
 }  // namespace pf

@@ -75,7 +75,7 @@ std::vector<StateSpec> ViscoplasticCorrespondenceMaterial::modelStateSpecs() con
 
 void ViscoplasticCorrespondenceMaterial::updateStress(const FamilyView& fam, StateStore& state,
                                                       const std::vector<Mat3>& tauN, const std::vector<Mat3>& de,
-                                                      std::vector<Mat3>& tau) const {
+                                                      const std::vector<double>&, std::vector<Mat3>& tau) const {
   const double* epsN = state.committed("Equivalent_Plastic_Strain");
   const double* timeN = state.committed("Viscoplastic_Time");
   const double* rateN = state.committed("Equivalent_Plastic_Strain_Rate");
