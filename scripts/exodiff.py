@@ -30,25 +30,17 @@ Exit status: 0 PASS, 1 FAIL, 2 usage or I/O error.
 """
 import os
 import sys
-
-
-def _reexec_with_system_python():
-    # numpy/netCDF4 come from Debian packages (/usr/bin/python3); a pyenv/venv python3 found
-    # first on PATH does not see them, so switch interpreters instead of failing.
-    syspy = "/usr/bin/python3"
-    if os.path.exists(syspy) and os.path.realpath(sys.executable) != os.path.realpath(syspy) \
-            and not os.environ.get("PF_NO_REEXEC"):
-        os.environ["PF_NO_REEXEC"] = "1"
-        os.execv(syspy, [syspy] + sys.argv)
+from periforge_py.interpreter import use_system_python  # noqa: E402
 
 
 try:
     import numpy as np
     import netCDF4
 except ImportError:
-    _reexec_with_system_python()
+    use_system_python()
     sys.stderr.write("exodiff.py: needs numpy and netCDF4 (Debian: python3-netcdf4)\n")
     sys.exit(2)
+from periforge_py.exodus import names as _names  # noqa: E402
 
 
 class UsageError(Exception):
@@ -220,16 +212,6 @@ class CompSpec:
 
 
 # ---------------------------------------------------------------- Exodus reading
-
-def _names(ds, var):
-    if var not in ds.variables:
-        return []
-    raw = ds.variables[var][:]
-    out = []
-    for row in np.ma.getdata(raw):
-        out.append(b"".join(row).split(b"\0", 1)[0].decode("ascii", "replace").strip())
-    return out
-
 
 class ExoFile:
     """Just the parts of an Exodus file exodiff needs, read with netCDF4."""

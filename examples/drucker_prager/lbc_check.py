@@ -31,28 +31,18 @@ import os
 import re
 import statistics
 import sys
-
-
-def _reexec_with_system_python():
-    # numpy/netCDF4 come from Debian packages (/usr/bin/python3), as for scripts/exodiff.py.
-    syspy = "/usr/bin/python3"
-    if os.path.exists(syspy) and os.path.realpath(sys.executable) != os.path.realpath(syspy) \
-            and not os.environ.get("PF_NO_REEXEC"):
-        os.environ["PF_NO_REEXEC"] = "1"
-        os.execv(syspy, [syspy] + sys.argv)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+from periforge_py.exodus import names  # noqa: E402
 
 
 try:
     import numpy as np
     import netCDF4
 except ImportError:
-    _reexec_with_system_python()
+    use_system_python()
     sys.stderr.write("lbc_check.py: needs numpy and netCDF4 (Debian: python3-netcdf4)\n")
     sys.exit(2)
-
-
-def names(ds, var):
-    return [b"".join(r).split(b"\0", 1)[0].decode().strip() for r in np.ma.getdata(ds.variables[var][:])]
 
 
 def yield_function(path):

@@ -18,6 +18,10 @@ import argparse
 import math
 import sys
 
+import os
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 
 E, NU, PHI, C, M0, P = 30e6, 0.25, 35.0, 60e3, 0.2, 600e3

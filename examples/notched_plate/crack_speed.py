@@ -15,14 +15,16 @@ bounds a mode-I crack's speed by c_R. --check: exit 1 unless the crack crosses (
 of the far edge) and its speed is below c_R.
 """
 import argparse
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 import netCDF4
-
-
-def names(f, var):
-    return ["".join(c.decode() for c in row if c) for row in f[var][:].data]
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../scripts"))
+from periforge_py.exodus import names  # noqa: E402
 
 
 def read(path):

@@ -4,13 +4,18 @@ arithmetic: j is a neighbour of i if |x_j - x_i| <= 2.01 and the segment x_i -> 
 the decks by Peridigm's rules (BondFilter.cxx): the meeting parameter t in [0, 1]; the rectangle y = 3,
 0 <= x <= 3, -1 <= z <= 4 with closed edges; the disk in y = 1 about (4.5, 1.5) (x, z), radius 1, open rim.
 usage: check_bond_filter.py RUN.e"""
+import os
 import sys
 from fractions import Fraction as F
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import element
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import element  # noqa: E402
 
 
 def crossing(p, q, plane_y):

@@ -2,12 +2,17 @@
 """Checks compat_default_block.e: the "default" group took block_1 (horizon 1.5), block_3 kept its own
 (2.5); Horizon is the node's block horizon and Number_Of_Neighbors counts the points within it, by hand:
 1 2 2 | 4 3 2. usage: check_compat_default_block.py RUN.e"""
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import element
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import element  # noqa: E402
 
 
 d = netCDF4.Dataset(sys.argv[1])

@@ -7,12 +7,17 @@ definition V_i (kappa theta_i^2/2 + (15 mu / (2 m_i)) sum_j omega (e - theta |xi
 1/|xi| and the bond sums done here from the node coordinates and displacements (theta and m from the
 same sums, checked against the Dilatation and Weighted_Volume outputs).
 usage: check_compat_energy.py RUN.e"""
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import element, nodal
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import element, nodal  # noqa: E402
 
 KAPPA, MU, EPS, HORIZON = 2.0e9, 1.0e9, 1.0e-3, 1.75
 

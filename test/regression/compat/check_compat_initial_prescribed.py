@@ -3,12 +3,17 @@
 in the initial state and 1e-4 from the first step on, its velocity there 1e-4 / dt (dt = 1e-6 s: the step's
 rate, as Peridigm's increment (f - u) / dt makes it); its y condition (true) is 2e-5 in every state with zero velocity.
 usage: check_compat_initial_prescribed.py RUN.e"""
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import nodal
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import nodal  # noqa: E402
 
 d = netCDF4.Dataset(sys.argv[1])
 right = 3

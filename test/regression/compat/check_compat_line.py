@@ -2,12 +2,17 @@
 """Checks compat_line.e: weighted volume m = sum omega |xi|^2 V with omega = 1/zeta (ends: 1*1 + 4/2 = 3,
 middle: 2), the acceleration equals Force / (rho V), and the two ends moved towards each other (the id 0
 in the node set was dropped, ids 1 and 3 kept). usage: check_compat_line.py RUN.e"""
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import element, nodal
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import element, nodal  # noqa: E402
 
 
 d = netCDF4.Dataset(sys.argv[1])

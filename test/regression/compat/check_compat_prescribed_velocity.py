@@ -6,12 +6,17 @@ component carries), `Step Rate` writes the held point's velocity 0 and the drive
 the body force b (-2e7 N/m^3 along y on every point) and rho = 1000 (Peridigm.cpp, executeExplicit: the last
 half kick reaches every component).
 usage: check_compat_prescribed_velocity.py HALF_KICK.e STEP_RATE.e"""
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import nodal
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import nodal  # noqa: E402
 
 kick, rate = netCDF4.Dataset(sys.argv[1]), netCDF4.Dataset(sys.argv[2])
 dt, rho, body = 1e-6, 1000.0, {"X": 0.0, "Y": -2e7, "Z": 0.0}

@@ -4,12 +4,17 @@
 Final Output Step, Output2 those from its Initial Output Step (Solver2's initial state at t = 3e-6 first),
 and Global_Kinetic_Energy = sum 1/2 rho V |v|^2 of the reference run's velocities.
 usage: check_compat_two_solvers.py TWO_1.e TWO_2.e ONE.e"""
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import element, global_variable, nodal, variable_names
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import element, global_variable, nodal, variable_names  # noqa: E402
 
 RHO = 1000.0
 

@@ -3,12 +3,17 @@
 node: at the first output the y velocity is 1 on nodes 2 and 5 and 0 elsewhere (the kick is along y and a
 line of points has no y stiffness to first order, so one 1 ns step leaves it as set).
 usage: check_compat_user_all.py RUN.e"""
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-from exodus_fields import nodal
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import nodal  # noqa: E402
 
 d = netCDF4.Dataset(sys.argv[1])
 ids = np.asarray(d["node_num_map"][:]) if "node_num_map" in d.variables else np.arange(1, 7)

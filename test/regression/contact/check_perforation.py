@@ -12,15 +12,13 @@ usage: check_perforation.py RUN_DIR
 import os
 import sys
 
-if os.path.realpath(sys.executable) != "/usr/bin/python3" and os.path.exists("/usr/bin/python3") \
-        and not os.environ.get("PF_NO_REEXEC"):  # numpy/netCDF4 are Debian packages
-    os.environ["PF_NO_REEXEC"] = "1"
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np  # noqa: E402
 import netCDF4  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "compat"))
-from exodus_fields import nodal  # noqa: E402
+from periforge_py.exodus import nodal  # noqa: E402
 
 RC, V0, DX = 0.4e-3, 300.0, 0.5e-3
 RHO_SPHERE, RHO_PLATE = 7700.0, 2200.0

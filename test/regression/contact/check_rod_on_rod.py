@@ -11,15 +11,13 @@ import csv
 import os
 import sys
 
-if os.path.realpath(sys.executable) != "/usr/bin/python3" and os.path.exists("/usr/bin/python3") \
-        and not os.environ.get("PF_NO_REEXEC"):  # numpy/netCDF4 are Debian packages
-    os.environ["PF_NO_REEXEC"] = "1"
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np  # noqa: E402
 import netCDF4  # noqa: E402
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "compat"))
-import exodus_fields  # noqa: E402
+from periforge_py import exodus as exodus_fields  # noqa: E402
 
 L0, RHO, V = 31.75e-3, 2700.0, 200.0  # V: each bar's speed, the wall run's
 

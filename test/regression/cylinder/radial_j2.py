@@ -8,6 +8,11 @@ Stress and strain are principal triples (rr, tt, zz): the problem has no shear. 
 is sigma_y + (K + H) eps_p, as Periforge's `Isotropic/Kinematic Hardening Modulus` mean it."""
 import math
 
+import os
+import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 
 GAUSS = (0.5 - 0.5 / math.sqrt(3.0), 0.5 + 0.5 / math.sqrt(3.0))

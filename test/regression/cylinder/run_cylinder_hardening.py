@@ -24,6 +24,9 @@ usage: run_cylinder_hardening.py PERIFORGE_EXE [MPIRUN... -np N] [--kinematic]
 import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))

@@ -24,11 +24,16 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 import netCDF4
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import write_genesis as wg  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import names  # noqa: E402
 
 NX, NY, NZ = 6, 3, 3
 ORIGIN = (0.001, -0.0015, 0.0005)
@@ -198,12 +203,6 @@ def error_text_lines(stderr):
 
 
 # ------------------------------------------------------------------------------------------------ reading
-
-def names(d, var):
-    if var not in d.variables:
-        return []
-    return [b"".join(r).decode().rstrip("\x00").strip() for r in d[var][:]]
-
 
 class Result:
     """An output file: per-point fields at each written step, indexed by global id (node_num_map - 1)."""

@@ -17,6 +17,11 @@ attrib<k> (SPHERE blocks), ns_status, ns_prop1, ns_names, node_ns<k>, dist_fact_
 Node and element numbers are 1-based in the file, as Exodus has them; the functions here take 0-based node
 indices and add 1 when writing.
 """
+import os
+import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 import netCDF4
 

@@ -29,13 +29,17 @@ step, |r V|_2 |u_n+1 - u_n|_2, summed. Each bound gets 1e-12 of the scale for ro
 ulps over the run).
 """
 import math
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import netCDF4
 import numpy as np
 
-sys.path.insert(0, __import__("os").path.join(__import__("os").path.dirname(__file__), "..", "compat"))
-from exodus_fields import element, nodal  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import element, nodal  # noqa: E402
 
 K, RHO, V0, BETA, GAMMA = 130.0e9, 7800.0, 1.0, 0.25, 0.5
 ROUND = 1e-12

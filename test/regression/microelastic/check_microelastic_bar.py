@@ -16,6 +16,10 @@ usage: check_microelastic_bar.py CSV
 import csv
 import sys
 
+import os
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 
 DX, RATIO, E, NU, EPS, NSEC = 0.002, 3.015, 200e9, 0.25, 1e-3, 10

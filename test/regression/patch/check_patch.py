@@ -7,6 +7,10 @@ with the cube's condition number (about (L/dx)^2 ~ 1e2) the displacement error s
 """
 import sys
 
+import os
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 from netCDF4 import Dataset
 

@@ -35,12 +35,12 @@ import os
 import subprocess
 import sys
 
-if os.path.realpath(sys.executable) != "/usr/bin/python3" and os.path.exists("/usr/bin/python3") \
-        and not os.environ.get("PF_NO_REEXEC"):  # numpy/netCDF4 are Debian packages
-    os.environ["PF_NO_REEXEC"] = "1"
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np  # noqa: E402
 import netCDF4  # noqa: E402
+from periforge_py import exodus  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 MEASURE = os.path.join(HERE, "..", "..", "..", "examples", "taylor_impact", "taylor_measure")
@@ -58,7 +58,7 @@ def node_fields(run):
     """Every node variable at every output frame, points in coordinate order (the file's own order)."""
     ds = netCDF4.Dataset(os.path.join(run, "taylor_coarse.e"))
     order = np.lexsort((ds["coordx"][:], ds["coordy"][:], ds["coordz"][:]))
-    names = [str(n) for n in netCDF4.chartostring(ds["name_nod_var"][:])]
+    names = exodus.names(ds, "name_nod_var")
     return {n: np.asarray(ds["vals_nod_var%d" % (k + 1)][:], dtype=float)[:, order] for k, n in enumerate(names)}
 
 

@@ -35,10 +35,9 @@ import json
 import os
 import sys
 
-if os.path.realpath(sys.executable) != "/usr/bin/python3" and os.path.exists("/usr/bin/python3") \
-        and not os.environ.get("PF_NO_REEXEC"):  # numpy/netCDF4/scipy are Debian packages
-    os.environ["PF_NO_REEXEC"] = "1"
-    os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))

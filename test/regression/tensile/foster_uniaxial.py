@@ -18,6 +18,11 @@ axial rate of deformation is lambdadot/lambda, so each step's strain increment i
 """
 import math
 
+import os
+import sys
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 from scipy.optimize import brentq
 

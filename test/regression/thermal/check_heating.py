@@ -12,16 +12,18 @@ source spread over the wrong dt misses it by a whole step's share or more. Also 
 (kinetic + stored + plastic work + wall loss against the initial kinetic energy, within 1 %: the Taylor example's
 own measure) and the hottest point (the impact face).
 """
+import os
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 from netCDF4 import Dataset
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.exodus import names  # noqa: E402
 
 RHO, C, BETA = 2700.0, 896.0, 0.9
-
-
-def names(d, var):
-    return ["".join(c.decode() for c in row if c).strip() for row in d.variables[var][:]]
 
 
 def main(mode, path):  # mode: adiabatic or conducting (the same checks; named for the report)

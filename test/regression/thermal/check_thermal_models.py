@@ -34,6 +34,10 @@ the energy-equivalent stress sqrt(2 E w) below 1e-6 E alpha dT.
 """
 import sys
 
+import os
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 from netCDF4 import Dataset
 

@@ -13,6 +13,10 @@ over one decay time the amplitude is off by about as much. A bond constant off b
 """
 import sys
 
+import os
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py.interpreter import use_system_python  # noqa: E402
+use_system_python()
 import numpy as np
 from netCDF4 import Dataset
 
