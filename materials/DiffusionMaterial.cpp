@@ -1,7 +1,6 @@
 #include "DiffusionMaterial.hpp"
 
 #include "HeatConduction.hpp"
-#include "core/InputError.hpp"
 
 namespace pf {
 
@@ -13,8 +12,8 @@ MaterialEntry DiffusionMaterial::entry() {
                   "Peridigm's nonlocal heat conduction without a force model (ImplicitDiffusion)",
                   {P::real("Coefficient", "thermal conductivity k [W/(m K)] of the bond rule (docs/thermal.md)").need().positive(),
                    P::flag("Use Improved Quadrature",
-                           "Peridigm's optional quadrature weights (built only with its USE_IMPROVED_QUADRATURE); "
-                           "Periforge has them not: true is an input error")
+                           "Peridigm's option: bond weights exact for temperature fields up to second order at every "
+                           "point (Periforge's moment weights, materials/MomentQuadrature.hpp; docs/thermal.md)")
                        .byDefault("false"),
                    P::real("Density", "mass density [kg/m^3]; only for a transient solve (with Specific Heat Capacity)")
                        .positive(),
@@ -22,12 +21,12 @@ MaterialEntry DiffusionMaterial::entry() {
                   [](const MaterialInput& in) { return std::unique_ptr<Material>(new DiffusionMaterial(in)); },
                   {}};
   e.createOperators = [](const MaterialInput& in) {
-    if (in.flag("Use Improved Quadrature"))
-      throw InputError(in.where() + ": 'Use Improved Quadrature' = true: Peridigm's improved-quadrature weights are "
-                       "not available in Periforge");
     const double capacity = in.get("Density", 0.0) * in.get("Specific Heat Capacity", 0.0);
+    const auto q = in.flag("Use Improved Quadrature") ? HeatConduction::Quadrature::Moments
+                                                      : HeatConduction::Quadrature::Volumes;
     std::vector<std::unique_ptr<FieldOperator>> terms;
-    terms.push_back(std::unique_ptr<FieldOperator>(new HeatConduction(in.get("Coefficient"), capacity, Dimension::ThreeD, 0.0)));
+    terms.push_back(std::unique_ptr<FieldOperator>(new HeatConduction(in.get("Coefficient"), capacity, Dimension::ThreeD,
+                                                                      0.0, HeatConduction::Normalisation::Analytic, q)));
     return terms;
   };
   return e;

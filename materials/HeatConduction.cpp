@@ -1,13 +1,26 @@
 #include "HeatConduction.hpp"
 
+#include "MomentQuadrature.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace pf {
 
-HeatConduction::HeatConduction(double k, double capacity, Dimension dim, double thickness, Normalisation n)
-    : k_(k), capacity_(capacity), thickness_(thickness), dim_(dim), norm_(n) {}
+HeatConduction::HeatConduction(double k, double capacity, Dimension dim, double thickness, Normalisation n,
+                               Quadrature q)
+    : k_(k), capacity_(capacity), thickness_(thickness), dim_(dim), norm_(n), quadrature_(q) {
+  if (q == Quadrature::Moments && isPlanar(dim))
+    throw std::logic_error("HeatConduction: moment quadrature is three-dimensional");
+}
+
+const double* HeatConduction::bondWeights(const FamilyView& fam) const {
+  if (quadrature_ == Quadrature::Volumes) return nullptr;
+  auto it = weights_.find(fam.begin);
+  if (it == weights_.end()) it = weights_.emplace(fam.begin, momentQuadratureWeights(fam)).first;
+  return it->second.data() - fam.offsets[fam.begin];  // indexed by the bond
+}
 
 double HeatConduction::microconductivity(double delta) const {
   const double d2 = delta * delta;
@@ -37,7 +50,7 @@ const double* HeatConduction::familySums(const FamilyView& fam) const {
 }
 
 template <class Term>
-double HeatConduction::bondSum(const FamilyView& fam, const double* S, int i, Term term) const {
+double HeatConduction::bondSum(const FamilyView& fam, const double* S, const double* w, int i, Term term) const {
   const double C = 2.0 * (isPlanar(dim_) ? 4.0 : 6.0) * k_;
   const double analytic = S ? 0.0 : microconductivity(fam.horizon);
   double sum = 0.0;
@@ -45,19 +58,22 @@ double HeatConduction::bondSum(const FamilyView& fam, const double* S, int i, Te
     if (fam.brokenN && fam.brokenN[b] != 0.0) continue;  // a broken bond conducts no heat
     const int j = fam.neighbors[b];
     const double c = S ? C / (S[i] + S[j]) : analytic;
-    sum += c * term(j) / fam.refLength[b] * fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
+    const double weight = w ? w[b] : fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
+    sum += c * term(j) / fam.refLength[b] * weight;
   }
   return sum;
 }
 
 void HeatConduction::apply(const FamilyView& fam, const double* u, double* out) const {
   const double* S = familySums(fam);
-  for (int i = fam.begin; i < fam.end; ++i) out[i] += bondSum(fam, S, i, [&](int j) { return u[j] - u[i]; });
+  const double* w = bondWeights(fam);
+  for (int i = fam.begin; i < fam.end; ++i) out[i] += bondSum(fam, S, w, i, [&](int j) { return u[j] - u[i]; });
 }
 
 void HeatConduction::diagonal(const FamilyView& fam, double* diag) const {
   const double* S = familySums(fam);
-  for (int i = fam.begin; i < fam.end; ++i) diag[i] += bondSum(fam, S, i, [](int) { return 1.0; });
+  const double* w = bondWeights(fam);
+  for (int i = fam.begin; i < fam.end; ++i) diag[i] += bondSum(fam, S, w, i, [](int) { return 1.0; });
 }
 
 }  // namespace pf

@@ -10,6 +10,9 @@
 // limit, exact for a whole family on any lattice (the sum replaces the integral pi delta^4, which a lattice at
 // delta = 3 dx misses by 10 %), and symmetric in i and j, so the bonds conserve heat (sum_i V_i h_i = 0) where two
 // families differ, as at a surface (a per-node c_i = C k / S_i there lost half of a Heat Flux's heat in a bar).
+#include <map>
+#include <vector>
+
 #include "core/Dimension.hpp"
 #include "core/FieldOperator.hpp"
 
@@ -19,7 +22,10 @@ class HeatConduction : public FieldOperator {
  public:
   // k: thermal conductivity (W/(m K)); capacity: rho c (J/(m^3 K)), 0 for steady solves only; thickness: 2D only.
   enum class Normalisation { Analytic, Family };
-  HeatConduction(double k, double capacity, Dimension dim, double thickness, Normalisation n = Normalisation::Analytic);
+  // Volumes: V_j (times the partial-volume fraction); Moments: MomentQuadrature.hpp's weights (3D only).
+  enum class Quadrature { Volumes, Moments };
+  HeatConduction(double k, double capacity, Dimension dim, double thickness, Normalisation n = Normalisation::Analytic,
+                 Quadrature q = Quadrature::Volumes);
   std::string field() const override { return "Temperature"; }
   void apply(const FamilyView& fam, const double* u, double* out) const override;
   void diagonal(const FamilyView& fam, double* diag) const override;
@@ -33,9 +39,13 @@ class HeatConduction : public FieldOperator {
   double k_, capacity_, thickness_;
   Dimension dim_;
   Normalisation norm_;
+  Quadrature quadrature_;
+  // Moments: the weights of each block's bonds, computed at the first evaluation (keyed by FamilyView::begin).
+  mutable std::map<int, std::vector<double>> weights_;
+  const double* bondWeights(const FamilyView& fam) const;
   // The bond constants' sum over i's intact bonds of c_ij V_j / |xi| weighting (u_j - u_i) (apply) or 1 (diagonal).
   template <class Term>
-  double bondSum(const FamilyView& fam, const double* S, int i, Term term) const;
+  double bondSum(const FamilyView& fam, const double* S, const double* w, int i, Term term) const;
   const double* familySums(const FamilyView& fam) const;
 };
 

@@ -235,6 +235,7 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
 void OutputManager::onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
                            const std::vector<double>& f) {
   ++count_;
+  nonlinearIterations_ += report.nonlinearIterations;  // every step counts, written or not
   lastStep_ = count_ - 1;
   lastTime_ = report.time;
   if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % frequency_ != 0) return;
@@ -285,6 +286,10 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
   std::map<std::string, double> globals;
   for (const std::string& var : globals_) {
     double e = 0.0;
+    if (var == "Nonlinear_Solver_Iterations") {  // the same on every rank: not summed
+      globals[var] = static_cast<double>(nonlinearIterations_);
+      continue;
+    }
     if (var == "Global_Contact_Energy") {
       e = model_.termEnergy();
     } else if (const char* field = globalSourceField(var)) {  // a node field of energies per node, summed
@@ -374,7 +379,7 @@ SolverFailure OutputManager::nonFinite(const std::string& var, const char* kind,
 
 void OutputManager::saveTo(CheckpointData& data) const {
   const std::string key = "output/" + baseName_ + "/";
-  data.numbers[key + "count"] = {static_cast<double>(count_), lastTime_};
+  data.numbers[key + "count"] = {static_cast<double>(count_), lastTime_, static_cast<double>(nonlinearIterations_)};
   if (!files_) return;  // not rank 0
   data.fileCopies[key + "csv"] = files_->part(".csv");
   if (exodus_) data.fileCopies[key + "exodus"] = files_->part(".e");
@@ -386,6 +391,7 @@ void OutputManager::resumeFrom(const CheckpointData& data) {
   count_ = static_cast<long>(count.at(0));
   lastStep_ = count_ - 1;
   lastTime_ = count.at(1);
+  nonlinearIterations_ = count.size() > 2 ? static_cast<long>(count[2]) : 0;  // checkpoints before it: 0
   gatherBlockIds();
   onRoot([&] {
     writer_.reset();

@@ -102,6 +102,7 @@ class OutputManager : public StepObserver {
   int frequency_ = 1;
   long first_ = 1, last_ = 0;  // Initial / Final Output Step (last_ = 0: no limit)
   long count_ = 0;             // steps reported so far, over all solvers
+  long nonlinearIterations_ = 0;  // Nonlinear_Solver_Iterations: StepReport::nonlinearIterations summed over them
   bool exodus_ = false;
   std::string exodusName_, historyName_, baseName_, where_;
   long lastStep_ = -1;     // the CSV step of the last reported step (-1: none yet), and its time

@@ -142,6 +142,7 @@ void ImplicitDiffusionSolver::run(Model& model, std::vector<double>& u, std::vec
   std::vector<double> T(n), rate(n, 0.0), f(u.size(), 0.0);
   auto report = [&](int step, double t, int iterations, double residual, double tol, double wall) {
     StepReport r{step, t, iterations, residual, tol, wall, nullptr};
+    r.nonlinearIterations = iterations;  // Peridigm's ImplicitDiffusion counts each Newton iteration
     observer.onStep(r, u, v, f);
   };
   std::size_t k = 1;

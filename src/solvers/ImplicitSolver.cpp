@@ -214,9 +214,10 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
                   opt_.absoluteTolerance, wall, progress.leftAfter(s).c_str());
       std::fflush(stdout);
     }
-    observer.onStep(StepReport{static_cast<int>(s), t, o.iterations, scaled * o.residualDensity,
-                               opt_.absoluteTolerance, wall, &carry},
-                    u, v, f);
+    StepReport report{static_cast<int>(s), t, o.iterations, scaled * o.residualDensity, opt_.absoluteTolerance, wall,
+                      &carry};
+    report.nonlinearIterations = o.iterations;  // Peridigm's Implicit counts each Newton iteration
+    observer.onStep(report, u, v, f);
   }
 }
 

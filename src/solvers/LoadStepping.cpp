@@ -109,7 +109,9 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
                     steps, tB, s.iterations, s.residual, s.tolerance, wall, left.c_str());
       std::fflush(stdout);
     }
-    observer.onStep(StepReport{step, tB, s.iterations, s.residual, s.tolerance, wall, &carry}, u, v, f);
+    StepReport report{step, tB, s.iterations, s.residual, s.tolerance, wall, &carry};
+    report.nonlinearIterations = s.nonlinearIterations;
+    observer.onStep(report, u, v, f);
   }
 }
 

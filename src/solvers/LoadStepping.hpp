@@ -33,6 +33,7 @@ struct StepStats {
   double residual = 0, tolerance = 0;
   double load = 0;  // the converged step's load scale (ResidualNorms::load)
   int rounds = -1;  // loading-balance relaxations of the step (YieldRounds.hpp); -1: not used
+  int nonlinearIterations = 0;  // StepReport::nonlinearIterations
 };
 
 // The load scale a step's relative tolerance multiplies: the step's own, but never below the largest a

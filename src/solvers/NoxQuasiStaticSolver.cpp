@@ -70,7 +70,11 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
                [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, double loadFloor) {
                  ++step_;
                  const Outcome o = advance(model, u, duPrev, tA, tB, 0, loadFloor);
-                 return StepStats{o.iterations, o.linearIterations, o.residual, o.tolerance, o.load};
+                 StepStats s{o.iterations, o.linearIterations, o.residual, o.tolerance, o.load};
+                 // Peridigm counts each NOX step() call, one even when the step starts converged (NOX then
+                 // iterates 0 times), and its own QuasiStatic Newton each iteration (Peridigm.cpp).
+                 s.nonlinearIterations = opt_.newton.peridigmAbsolute ? o.iterations : std::max(1, o.iterations);
+                 return s;
                },
                resume);
 }

@@ -46,6 +46,9 @@ struct StepReport {
   double tolerance = 0.0;
   double wallSeconds = 0.0;  // wall time of this step
   const SolverCarry* carry = nullptr;  // what resuming after this step needs (see SolverCarry)
+  // The step's share of Peridigm's Nonlinear_Solver_Iterations: the passes of its nonlinear solver (NOX's step()
+  // calls, a Newton loop's iterations); 0 for explicit and dynamic-relaxation steps, which Peridigm does not count.
+  int nonlinearIterations = 0;
 };
 
 class StepObserver {
