@@ -7,9 +7,13 @@ foreach(np 1 2)
   else()
     set(CYL_CMD ${MPIRUN} -np 2 ${PERIFORGE_EXE})
   endif()
-  add_test(NAME cylinder_pressure_np${np}
-           COMMAND ${PY} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cylinder/run_cylinder.py ${CYL_CMD})
-  set_tests_properties(cylinder_pressure_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 300)
+  # The closed forms at np 1 only (75 s of the suite's CPU at np 2); the Pressure condition across two ranks is
+  # checked by cylinder_hardening_np2 below.
+  if(np EQUAL 1)
+    add_test(NAME cylinder_pressure_np${np}
+             COMMAND ${PY} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cylinder/run_cylinder.py ${CYL_CMD})
+    set_tests_properties(cylinder_pressure_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 300)
+  endif()
   # Elastic Plastic Hardening (isotropic) loaded past p_L and unloaded, against a 1D radial J2 solution
   # written in the test (radial_j2.py). Bounds and reasons: run_cylinder_hardening.py.
   add_test(NAME cylinder_hardening_np${np}

@@ -35,6 +35,12 @@ periforge_check(bar_3d_nox_vs_adr "bar_3d_nox_np2;bar_3d_np1"
   ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_nox_np2/bar_3d_nox.e
   ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_np1/bar_3d.e ${REG}/bar/nox_vs_adr.comp)
 
+# Nonlinear_Solver_Iterations is the NOX solver's own count: the running sum of its NOX steps, larger for a tighter
+# tolerance (the bar of bar_3d_nox.xml at two tolerances).
+add_test(NAME nox_iterations_count COMMAND ${PY} ${REG}/nox_iterations/check_nox_iterations.py ${PERIFORGE_EXE}
+  ${REG}/bar/bar_3d_nox.xml)
+set_tests_properties(nox_iterations_count PROPERTIES LABELS "regression")
+
 # Peridigm-compatibility features on a deck of our own (no Peridigm files needed): user-defined influence
 # function, node-set ids the mesh lacks (dropped with a warning), Verlet acceleration output.
 foreach(np 1 2)

@@ -316,11 +316,6 @@ CASES = [
        '<Parameter name="Material Model" type="string" value="Diffusion"/>'
        '<Parameter name="Coefficient" type="double" value="1.0"/></ParameterList>')],
      ["Solver", "force model"]),
-    ("Diffusion's improved quadrature",
-     [('<Parameter name="Material Model" type="string" value="Elastic"/>.*?</ParameterList>',
-       '<Parameter name="Material Model" type="string" value="Diffusion"/><Parameter name="Coefficient" type="double" '
-       'value="1.0"/><Parameter name="Use Improved Quadrature" type="bool" value="true"/></ParameterList>')],
-     ["Steel", "Use Improved Quadrature"]),
 ]
 
 

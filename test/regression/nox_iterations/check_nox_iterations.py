@@ -1,0 +1,71 @@
+#!/usr/bin/python3
+"""Nonlinear_Solver_Iterations is the NOX solver's real count (src/solvers/NoxQuasiStaticSolver.cpp, summed by
+src/output/OutputManager.cpp): the bar of
+bar_3d_nox.xml, 3 load steps, run at a loose and at a tight Relative Tolerance. Each written value must be 0 at
+the initial state and then the running sum of the NOX steps the solver printed per load step (Peridigm's rule,
+executeNOXQuasiStatic: one NOX::Solver::step() per Newton iteration, one for a solve whose initial guess already
+passes); the tight run must need more of them than the loose one (the count follows the work, not a constant).
+
+usage: check_nox_iterations.py PERIFORGE BAR_NOX_DECK
+"""
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
+from periforge_py import exodus  # noqa: E402
+import netCDF4  # noqa: E402
+
+LOOSE, TIGHT = 1.0e-3, 1.0e-9
+
+
+def deck(base, tolerance):
+    text = open(base).read()
+    text = re.sub(r'(name="Relative Tolerance" type="double" value=")[^"]*', r"\g<1>%g" % tolerance, text)
+    text = re.sub(r'(name="Number of Load Steps" type="int" value=")[^"]*', r"\g<1>3", text)
+    text = text.replace('<Parameter name="Verbose" type="bool" value="true"/>', "")
+    text = re.sub(r"<ParameterList name=\"Probes\">.*?</ParameterList>\s*</ParameterList>\s*</ParameterList>",
+                  "</ParameterList>", text, flags=re.S)
+    text = text.replace('<ParameterList name="Output Variables">',
+                        '<ParameterList name="Output Variables">\n'
+                        '      <Parameter name="Nonlinear_Solver_Iterations" type="bool" value="true"/>')
+    return text
+
+
+def run(exe, base, tolerance, work):
+    os.makedirs(work)
+    with open(os.path.join(work, "deck.xml"), "w") as f:
+        f.write(deck(base, tolerance))
+    p = subprocess.run([exe, "deck.xml"], cwd=work, capture_output=True, text=True)
+    if p.returncode != 0:
+        sys.exit("run failed (tolerance %g): %s" % (tolerance, (p.stdout + p.stderr)[-800:]))
+    per_step = [int(n) for n in re.findall(r"Newton iterations\s+(\d+)", p.stdout)]
+    d = netCDF4.Dataset(os.path.join(work, "bar_3d_nox.e"))
+    written = [float(x) for x in exodus.global_variable(d, "Nonlinear_Solver_Iterations")]
+    return per_step, written
+
+
+def main():
+    exe, base = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    tmp = tempfile.mkdtemp(prefix="nox_iterations_")
+    counts = {}
+    for tol in (LOOSE, TIGHT):
+        per_step, written = run(exe, base, tol, os.path.join(tmp, "tol%g" % tol))
+        if len(per_step) != 3 or len(written) != 4:
+            sys.exit("tolerance %g: %d load-step lines, %d written steps (expected 3, 4)" % (tol, len(per_step), len(written)))
+        expected = [0]
+        for n in per_step:  # no load-step cuts or break rounds here: one NOX solve per load step
+            expected.append(expected[-1] + max(1, n))
+        if written != [float(e) for e in expected]:
+            sys.exit("tolerance %g: written %s, expected %s from the printed iterations %s" % (tol, written, expected, per_step))
+        counts[tol] = written[-1]
+        print("Relative Tolerance %g: NOX iterations per step %s, written %s" % (tol, per_step, written))
+    if not counts[TIGHT] > counts[LOOSE]:
+        sys.exit("the tighter tolerance took no more NOX steps (%g vs %g)" % (counts[TIGHT], counts[LOOSE]))
+    print("ok")
+
+
+if __name__ == "__main__":
+    main()
