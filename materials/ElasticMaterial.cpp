@@ -30,6 +30,14 @@ MaterialEntry ElasticMaterial::entry() {
   return e;
 }
 
+MaterialEntry ElasticMaterial::partialVolumeEntry() {
+  MaterialEntry e = entry();
+  e.model = "Elastic Partial Volume";
+  e.doc = "Peridigm's name for Elastic with element-horizon partial volumes; here Elastic (partial volumes: the "
+          "discretization's 'Partial Volume')";
+  return e;
+}
+
 std::vector<StateSpec> ElasticMaterial::stateSpecs() const {
   std::vector<StateSpec> s = {{"Dilatation", Location::Node, false, true}};
   // Peridigm defines the stored energy of its (3D) Elastic model only.

@@ -15,6 +15,9 @@ class ElasticMaterial : public Material {
  public:
   explicit ElasticMaterial(const MaterialInput& in);
   static MaterialEntry entry();
+  // "Elastic Partial Volume": Peridigm's name for the same solid where its partial volumes come from
+  // element-horizon intersections; without them (Periforge computes none) its force is Elastic's.
+  static MaterialEntry partialVolumeEntry();
 
   std::vector<StateSpec> stateSpecs() const override;
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;

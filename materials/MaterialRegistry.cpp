@@ -10,6 +10,7 @@
 #include "ElasticPlasticCorrespondenceMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
 #include "HardeningPlasticity.hpp"
+#include "LinearLpsMaterial.hpp"
 #include "MicroelasticMaterial.hpp"
 #include "ViscoplasticCorrespondenceMaterial.hpp"
 
@@ -18,6 +19,8 @@ namespace pf {
 const std::vector<MaterialEntry>& materialRegistry() {
   static const std::vector<MaterialEntry> entries = {
       ElasticMaterial::entry(),
+      ElasticMaterial::partialVolumeEntry(),
+      LinearLpsMaterial::entry(),
       ElasticPlasticMaterial::entry(),
       HardeningPlasticity::entry(),
       MicroelasticMaterial::entry(),

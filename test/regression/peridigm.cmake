@@ -192,7 +192,9 @@ set(peridigm_suite_cases
   "ViscoplasticNeedlemanFullyPrescribedTension_NoFlaw ViscoplasticNeedlemanFullyPrescribedTension_NoFlaw.xml ViscoplasticNeedlemanFullyPrescribedTension_NoFlaw ViscoplasticNeedlemanFullyPrescribedTension_NoFlaw.comp"
   "ViscoplasticNeedlemanFullyPrescribedTension_WithFlaw ViscoplasticNeedlemanFullyPrescribedTension_WithFlaw.xml ViscoplasticNeedlemanFullyPrescribedTension_WithFlaw ViscoplasticNeedlemanFullyPrescribedTension_WithFlaw.comp"
   # Peridigm's QuasiStatic 'Absolute Tolerance' on its own residual measure, ||f V||_2 + 20 ||f V||_inf
-  "ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.xml ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.comp")
+  "ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.xml ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.comp"
+  # Peridigm's Linear LPS beside Elastic Partial Volume (= Elastic without element-horizon volumes, docs/materials.md)
+  "LinearLPSBar LinearLPSBar.yaml LinearLPSBar LinearLPSBar.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 1 2)
