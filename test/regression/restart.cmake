@@ -53,8 +53,10 @@ endforeach()
 
 # A Rigid Wall (issue 17) across a restart: the wall has no state of its own, the points on it carry their
 # velocities; the Taylor bar killed after its first checkpoint (step 200 of 600, in contact) and restarted
-# ends with rs.csv (the wall's reaction) and rs.e byte for byte equal to an uninterrupted run, at np 1 and 2.
-foreach(np 1 2)
+# ends with rs.csv (the wall's reaction) and rs.e byte for byte equal to an uninterrupted run, at np 2 (np 1 too
+# until session 24: the same property on one rank, 19 s of the suite; np 1 byte-for-byte restarts stay covered by
+# the bar, the NOX plate and the thermal Taylor bar).
+foreach(np 2)
   add_test(NAME restart_taylor_kill_np${np}_np${np}
            COMMAND ${PY} ${RST}/run_restart.py kill ${RST}/restart_taylor.xml ${np} ${np} ${PERIFORGE_EXE} ${MPIRUN})
   set_tests_properties(restart_taylor_kill_np${np}_np${np} PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS ${np})
