@@ -2,6 +2,7 @@
 
 #include "core/InputError.hpp"
 #include "OsbKernels.hpp"
+#include "SolidParameters.hpp"
 
 namespace pf {
 
@@ -58,17 +59,15 @@ LinearLpsMaterial::LinearLpsMaterial(const MaterialInput& in)
 }
 
 MaterialEntry LinearLpsMaterial::entry() {
-  using P = ParameterSpec;
-  std::vector<ParameterSpec> params = {
-      P::real("Density", "mass density [kg/m^3]").need().positive(),
-      P::real("Bulk Modulus", "give exactly two of the four elastic constants").positive(),
-      P::real("Shear Modulus").positive(),
-      P::real("Young's Modulus").positive(),
-      P::real("Poisson's Ratio").above(-1.0).below(0.5),
-      P::flag("Use Partial Volume", "Peridigm's element-horizon partial volumes: only false is supported")
-          .byDefault("false"),
-      P::flag("Apply Automatic Differentiation Jacobian", "accepted, ignored (Peridigm)").byDefault("false"),
-  };
+  // The OSB solid's parameters without the planar ones (Peridigm's model is 3D) and the shear correction.
+  std::vector<ParameterSpec> params;
+  for (ParameterSpec& p : elasticSolidParameters())
+    if (p.name != "Plane Stress" && p.name != "Plane Strain" && p.name != "Thickness" &&
+        p.name != "Apply Shear Correction Factor")
+      params.push_back(std::move(p));
+  params.push_back(ParameterSpec::flag("Use Partial Volume",
+                                       "Peridigm's element-horizon partial volumes: only false is supported")
+                       .byDefault("false"));
   return MaterialEntry{"Linear LPS Partial Volume",
                        "Peridigm's linearised linear peridynamic solid (small displacements, 3D)", params,
                        [](const MaterialInput& in) { return std::unique_ptr<Material>(new LinearLpsMaterial(in)); },
