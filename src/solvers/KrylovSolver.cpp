@@ -12,6 +12,11 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
 
+// Belos' Tpetra library already holds GMRES for Tpetra's default vector and operator (its solver factory instantiates
+// it): taken from there instead of instantiated again here, which took half of this file's 41 s compile (the largest
+// of the build; docs/benchmark-log.md, session 25).
+extern template class Belos::PseudoBlockGmresSolMgr<double, Tpetra::MultiVector<double>, Tpetra::Operator<double>>;
+
 #include <algorithm>
 
 #include "PairStiffness.hpp"
@@ -197,7 +202,11 @@ KrylovOutcome KrylovSolver::solve(const TangentAction& J, const double* rhs, dou
   auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(op, X, B));
   if (!s.prec.is_null()) problem->setRightPrec(s.prec);
   problem->setProblem();
-  Belos::PseudoBlockGmresSolMgr<double, MV, OP> gmres(problem, params);
+  // The problem first, then the parameters: the (problem, list) constructor's order; that constructor is not among
+  // the library's members (the extern template above).
+  Belos::PseudoBlockGmresSolMgr<double, MV, OP> gmres;
+  gmres.setProblem(problem);
+  gmres.setParameters(params);
   KrylovOutcome out;
   try {
     out.converged = gmres.solve() == Belos::Converged;
