@@ -238,7 +238,8 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
   nonlinearIterations_ += report.nonlinearIterations;  // every step counts, written or not
   lastStep_ = count_ - 1;
   lastTime_ = report.time;
-  if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % frequency_ != 0) return;
+  const long every = static_cast<long>(report.outputEvery > 0 ? report.outputEvery : frequency_) * report.outputEveryFactor;
+  if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % every != 0) return;
   const std::vector<double> global = historyRow(report, u, v, f);
   std::vector<double> row = {report.time, static_cast<double>(count_ - 1)};
   if (applied_) row.push_back((*applied_)(0.0, 0.0, 0.0, report.time));

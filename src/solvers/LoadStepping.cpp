@@ -64,7 +64,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
   double peakLoad = 0.0;
   SolverCarry carry{{{"Increment", &duPrev}}, {{"Peak Load", 0.0}}};  // the next step's predictor and tolerance
   const double t0 = times.front();
-  const int steps = static_cast<int>(times.size()) - 1;
+  int steps = static_cast<int>(times.size()) - 1;
   if (resume) {
     duPrev = resume->vector("Increment");
     // A checkpoint written before the peak load was carried resumes with its own step's scale.
@@ -85,6 +85,12 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     // after the solver has spent its iterations (or NOX its step cuts) on a NaN load.
     model.requireFiniteLoads(tB);
     const StepStats s = solveStep(u, duPrev, tA, tB, peakLoad);
+    if (s.outcome == StepStats::Outcome::Stop) return;
+    if (s.outcome == StepStats::Outcome::Retry) {  // the same step again, on the changed times
+      steps = static_cast<int>(times.size()) - 1;
+      --step;
+      continue;
+    }
     peakLoad = std::max(peakLoad, s.load);
     carry.scalars[0].second = peakLoad;
     // f for output; the state is committed already
@@ -111,6 +117,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     }
     StepReport report{step, tB, s.iterations, s.residual, s.tolerance, wall, &carry};
     report.nonlinearIterations = s.nonlinearIterations;
+    report.outputEveryFactor = s.outputEveryFactor;
     observer.onStep(report, u, v, f);
   }
 }

@@ -34,6 +34,11 @@ struct StepStats {
   double load = 0;  // the converged step's load scale (ResidualNorms::load)
   int rounds = -1;  // loading-balance relaxations of the step (YieldRounds.hpp); -1: not used
   int nonlinearIterations = 0;  // StepReport::nonlinearIterations
+  int outputEveryFactor = 1;    // StepReport::outputEveryFactor
+  // Retry: the step did not converge and the solver changed the times list (a shorter step inserted); solve the
+  // step again from the same state. Stop: end the load stepping here (the state is the last reported step's).
+  enum class Outcome { Converged, Retry, Stop };
+  Outcome outcome = Outcome::Converged;
 };
 
 // The load scale a step's relative tolerance multiplies: the step's own, but never below the largest a
@@ -47,7 +52,7 @@ inline double loadScale(const ResidualNorms& r, double loadFloor) { return r.loa
 // step's increment; loadFloor is the largest StepStats::load so far (carried as "Peak Load"); prints one progress line,
 // reports the step with the load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
 // resume (or null): continue after resume->step, whose increment it carries as "Increment" (a restart);
-// each report carries duPrev under that name.
+// each report carries duPrev under that name. times may change during the loop (StepStats::Outcome::Retry).
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>& u, std::vector<double>& duPrev, double tA,

@@ -140,6 +140,7 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
   out.residualDensity = force->last().residualDensity;
   out.tolerance = force->tolerance();
   out.load = force->last().load;
+  out.peridigmResidual = force->last().peridigmQuasiStatic;
   return out;
 }
 

@@ -51,6 +51,7 @@ struct NewtonOutcome {
   double residual = 0, tolerance = 0;  // force residual (free dofs) and the relative test's bound on it [N]
   double residualDensity = 0;          // the same residual as force density
   double load = 0;                     // the last residual's load scale (ResidualNorms::load)
+  double peridigmResidual = 0;         // the last residual in Peridigm's QuasiStatic measure (ResidualNorms)
 };
 
 class NewtonKrylov {

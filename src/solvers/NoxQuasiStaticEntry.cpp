@@ -47,6 +47,15 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
   o.newton.precBondRadius = p.get("Preconditioner Bond Radius", o.newton.precBondRadius);
   if (p.has("Jacobian")) o.newton.exactJacobian = p.text("Jacobian") == "Exact";
   o.newton.nox = passThrough;
+  auto& entries = o.newton.nox.entries;  // Peridigm's adaptive load stepping is Periforge's to read, not NOX's
+  for (auto it = entries.begin(); it != entries.end(); ++it)
+    if (it->name == "Adaptive Load-Stepping") {
+      if (it->kind != ParamTree::Entry::Kind::List)
+        throw InputError(p.where() + ": 'Adaptive Load-Stepping' must be a list");
+      o.adaptive = parseAdaptiveLoadStepping(*it->list, p.where());
+      entries.erase(it);
+      break;
+    }
   o.newton.where = p.where();
   if (p.has("Nonlinear Solver")) {
     ParamTree::Entry e;
@@ -99,6 +108,7 @@ SolverEntry NoxQuasiStaticSolver::peridigmEntry() {
   e.parameters.push_back(S::text("Belos Linear Solver", "Peridigm's Krylov method; accepted, Periforge's is GMRES (each "
                                                         "step converges to the same tolerance)")
                              .oneOf({"BlockCG", "BlockGmres", "Block CG", "Block GMRES", "GMRES", "CG"}));
+  e.passThrough = {"Adaptive Load-Stepping"};
   e.create = [](const ParameterValues& p, const ParamTree& pass) { return create(p, pass, true); };
   return e;
 }

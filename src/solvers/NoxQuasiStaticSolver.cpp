@@ -5,6 +5,7 @@
 
 #include "BreakRounds.hpp"
 #include "LoadStepping.hpp"
+#include "core/InputError.hpp"
 #include "model/Model.hpp"
 
 namespace pf {
@@ -64,6 +65,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
 
 void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                                const std::vector<double>& times, StepObserver& observer) {
+  if (opt_.adaptive.on) return runAdaptive(model, u, v, times, observer);
   const SolverResume* resume = takeResume();
   step_ = resume ? resume->step : 0;
   runLoadSteps(model, u, v, times, observer,
@@ -77,6 +79,101 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
                  return s;
                },
                resume);
+}
+
+namespace {
+
+// The explicit run after the switch writes at the `Switch to Verlet` list's Output Frequency (Peridigm's output
+// counter goes on across the switch: the explicit run's initial state is counted, so with frequency 10 it writes
+// its steps 9, 19, ...).
+class ExplicitCadence : public StepObserver {
+ public:
+  ExplicitCadence(StepObserver& next, int every) : next_(next), every_(every) {}
+  void onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
+              const std::vector<double>& f) override {
+    StepReport r = report;
+    r.outputEvery = every_;
+    next_.onStep(r, u, v, f);
+  }
+
+ private:
+  StepObserver& next_;
+  int every_;
+};
+
+}  // namespace
+
+void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std::vector<double>& v,
+                                       const std::vector<double>& given, StepObserver& observer) {
+  const AdaptiveLoadStepping& a = opt_.adaptive;
+  if (takeResume())
+    throw InputError(opt_.newton.where + ": a restart of a run with 'Adaptive Load-Stepping' is not supported");
+  const bool root = model.layout().rank() == 0;
+  std::vector<double> times(given);
+  int inStep = 0, total = 0, outputFactor = 1;
+  double switchAt = -1.0;  // >= 0: the explicit run starts there
+  const bool peridigmAbs = opt_.newton.peridigmAbsolute && opt_.newton.absoluteTolerance > 0.0;
+  step_ = 0;
+  runLoadSteps(model, u, v, times,observer,
+               [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, double loadFloor) {
+                 ++step_;
+                 const std::vector<double> uA(u);
+                 predictStep(model, tB, u, duPrev);
+                 Outcome o = newton_.solveWithBreaks(model, u, tB, nullptr, loadFloor);
+                 // The step's residual and bound in the deck's measure: Peridigm's ||r||_2 + 20 ||r||_inf against
+                 // its Absolute Tolerance, else the force residual against the relative bound.
+                 const double tol = peridigmAbs ? opt_.newton.absoluteTolerance : o.tolerance;
+                 const double res = peridigmAbs ? o.peridigmResidual : o.residual;
+                 // Peridigm accepts a step whose residual ends within 100 times its tolerance, with a warning.
+                 if (!o.converged && peridigmAbs && res < 100.0 * tol) {
+                   if (root) std::printf("  step to t = %g accepted at residual %.3e (tolerance %.3e), as Peridigm\n",
+                                         tB, res, tol);
+                   o.converged = true;
+                 }
+                 StepStats s{o.iterations, o.linearIterations, o.residual, o.tolerance, o.load};
+                 s.nonlinearIterations = o.iterations;
+                 if (o.converged) {
+                   std::vector<double> f(model.numDofs());
+                   model.internalForce(u.data(), f.data());
+                   model.commit();
+                   model.endBreakRounds();
+                   for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+                   inStep = 0;
+                   s.outputEveryFactor = outputFactor;
+                   return s;
+                 }
+                 model.rollback();
+                 u = uA;
+                 ++inStep;
+                 ++total;
+                 if (inStep > a.maxReductionsInStep || total > a.maxTotalReductions) {
+                   if (!a.switchToVerlet) {
+                     char msg[256];
+                     std::snprintf(msg, sizeof msg, "QuasiStatic step to t = %g did not converge (residual %.3e, "
+                                   "tolerance %.3e) after %d load step reductions (%d in all)", tB, res, tol,
+                                   inStep - 1, total - 1);
+                     throw SolverFailure(msg);
+                   }
+                   switchAt = tA;
+                   s.outcome = StepStats::Outcome::Stop;
+                   return s;
+                 }
+                 const double half = halveStep(times, tA, tB, a.reduceRemaining);
+                 if (a.adaptiveOutput) outputFactor *= 2;
+                 if (root) std::printf("  QuasiStatic step to t = %g did not converge (residual %.3e, tolerance %.3e): "
+                                       "load step reduced to %g\n", tB, res, tol, half);
+                 for (double& d : duPrev) d *= 0.5;
+                 s.outcome = StepStats::Outcome::Retry;
+                 return s;
+               },
+               nullptr);
+  if (switchAt < 0.0) return;
+  if (root) std::printf("periforge: QuasiStatic: switching to Verlet at t = %g (Adaptive Load-Stepping)\n", switchAt);
+  VerletSolver verlet(a.verlet);
+  verlet.setFields({"Displacement"});
+  verlet.check(model);
+  ExplicitCadence cadence(observer, a.verletOutputFrequency);
+  verlet.run(model, u, v, {switchAt, given.back()}, cadence);
 }
 
 }  // namespace pf

@@ -5,6 +5,7 @@
 // Maximum Cuts times; a step still failing is relaxed by ADR, and the fallback is logged.
 #include <memory>
 
+#include "AdaptiveLoadStepping.hpp"
 #include "AdrSolver.hpp"
 #include "NewtonKrylov.hpp"
 #include "Solver.hpp"
@@ -16,6 +17,7 @@ struct NoxOptions {
   NewtonKrylovOptions newton;  // tolerances, iterations per (sub)step, preconditioner, NOX's lists
   int maxCuts = 4;             // a failing step is halved at most this many times
   AdrOptions fallback;
+  AdaptiveLoadStepping adaptive;  // Peridigm's QuasiStatic `Adaptive Load-Stepping` (instead of cuts and ADR)
 };
 
 class NoxQuasiStaticSolver : public Solver {
@@ -33,6 +35,10 @@ class NoxQuasiStaticSolver : public Solver {
   // Solves [tA, tB] from the converged u at tA, cutting or falling back as needed; commits its end.
   Outcome advance(Model& model, std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, int depth,
                   double loadFloor);
+
+  // Peridigm's adaptive load stepping (AdaptiveLoadStepping.hpp) in place of the cuts and the ADR fallback.
+  void runAdaptive(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
+                   StepObserver& observer);
 
   NoxOptions opt_;
   long step_ = 0;          // the load step being solved, for messages

@@ -49,6 +49,11 @@ struct StepReport {
   // The step's share of Peridigm's Nonlinear_Solver_Iterations: the passes of its nonlinear solver (NOX's step()
   // calls, a Newton loop's iterations); 0 for explicit and dynamic-relaxation steps, which Peridigm does not count.
   int nonlinearIterations = 0;
+  // Peridigm's adaptive load stepping sets its output lists' cadence from the solver (QuasiStatic's `Adaptive
+  // Load-Stepping`): > 0 replaces each Output list's `Output Frequency` for this step (its `Switch to Verlet` list's
+  // Output Frequency); the factor multiplies it (`Adaptive output frequency`, doubled with each step reduction).
+  int outputEvery = 0;
+  int outputEveryFactor = 1;
 };
 
 class StepObserver {

@@ -194,7 +194,9 @@ set(peridigm_suite_cases
   # Peridigm's QuasiStatic 'Absolute Tolerance' on its own residual measure, ||f V||_2 + 20 ||f V||_inf
   "ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.xml ElasticCorrespondenceQSTension ElasticCorrespondenceQSTension.comp"
   # Peridigm's Linear LPS beside Elastic Partial Volume (= Elastic without element-horizon volumes, docs/materials.md)
-  "LinearLPSBar LinearLPSBar.yaml LinearLPSBar LinearLPSBar.comp")
+  "LinearLPSBar LinearLPSBar.yaml LinearLPSBar LinearLPSBar.comp"
+  # Peridigm's QuasiStatic 'Adaptive Load-Stepping': both steps fail, the run switches to Verlet (docs/peridigm.md)
+  "AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.xml AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 1 2)

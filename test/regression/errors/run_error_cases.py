@@ -88,6 +88,26 @@ CASES = [
        '<ParameterList name="QuasiStatic"><Parameter name="Time Steps" type="string" value="0.0 0.5 one"/></ParameterList>'),
       (r'<Parameter name="Initial Time" type="double" value="0.0"/>', '')],
      ["Time Steps", "one"]),
+    # Peridigm's QuasiStatic 'Adaptive Load-Stepping' (docs/peridigm.md): its lists are checked when the deck is read.
+    ("adaptive load stepping without its maxima",
+     [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<ParameterList name="QuasiStatic"><Parameter name="Number of Load Steps" type="int" value="2"/>'
+       '<Parameter name="Absolute Tolerance" type="double" value="1e-3"/>'
+       '<ParameterList name="Adaptive Load-Stepping">'
+       '<Parameter name="Maximum total load step reductions" type="int" value="5"/>'
+       '</ParameterList></ParameterList>')],
+     ["Adaptive Load-Stepping", "Maximum load step reductions in one step"]),
+    ("Switch to Verlet without a time step",
+     [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<ParameterList name="QuasiStatic"><Parameter name="Number of Load Steps" type="int" value="2"/>'
+       '<Parameter name="Absolute Tolerance" type="double" value="1e-3"/>'
+       '<ParameterList name="Adaptive Load-Stepping">'
+       '<Parameter name="Maximum load step reductions in one step" type="int" value="1"/>'
+       '<Parameter name="Maximum total load step reductions" type="int" value="5"/>'
+       '<ParameterList name="Switch to Verlet"><Parameter name="Output Frequency" type="int" value="10"/>'
+       '<Parameter name="Safety Factr" type="double" value="0.6"/></ParameterList>'
+       '</ParameterList></ParameterList>')],
+     ["Switch to Verlet", "Safety Factr"]),
     # Issue 20: the linear solver list's choices are checked when the deck is read, not at the first solve.
     ("Krylov method other than GMRES",
      [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
