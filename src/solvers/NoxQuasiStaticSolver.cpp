@@ -14,6 +14,20 @@ NoxQuasiStaticSolver::NoxQuasiStaticSolver(NoxOptions o) : opt_(std::move(o)), n
 
 NoxQuasiStaticSolver::~NoxQuasiStaticSolver() = default;
 
+namespace {
+
+// A step's end, converged at u: the model's state committed (from a last force pass at u: the last residual may have
+// been a perturbed one), its break rounds ended, and duPrev = the step's increment from uA.
+void commitStep(Model& model, const std::vector<double>& u, const std::vector<double>& uA, std::vector<double>& duPrev) {
+  std::vector<double> f(model.numDofs());
+  model.internalForce(u.data(), f.data());
+  model.commit();
+  model.endBreakRounds();
+  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+}
+
+}  // namespace
+
 NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::vector<double>& u,
                                                             std::vector<double>& duPrev, double tA, double tB,
                                                             int depth, double loadFloor) {
@@ -24,11 +38,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   // state (BreakRounds.hpp); without, this is one Newton solve.
   Outcome o = newton_.solveWithBreaks(model, u, tB, nullptr, loadFloor);
   if (o.converged) {
-    std::vector<double> f(model.numDofs());
-    model.internalForce(u.data(), f.data());  // the last residual may have been a perturbed one
-    model.commit();
-    model.endBreakRounds();
-    for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+    commitStep(model, u, uA, duPrev);
     return o;
   }
   model.rollback();
@@ -55,11 +65,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
     r = adr.relax(model, u, tB, uA, step_, loadFloor);  // throws SolverFailure if it fails too
     return true;
   }, tB);
-  std::vector<double> f(model.numDofs());
-  model.internalForce(u.data(), f.data());
-  model.commit();
-  model.endBreakRounds();
-  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+  commitStep(model, u, uA, duPrev);
   return Outcome{true, r.iterations, 0, r.residual, r.tolerance, 0.0, r.load};
 }
 
@@ -114,7 +120,7 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
   double switchAt = -1.0;  // >= 0: the explicit run starts there
   const bool peridigmAbs = opt_.newton.peridigmAbsolute && opt_.newton.absoluteTolerance > 0.0;
   step_ = 0;
-  runLoadSteps(model, u, v, times,observer,
+  runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, double loadFloor) {
                  ++step_;
                  const std::vector<double> uA(u);
@@ -133,11 +139,7 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
                  StepStats s{o.iterations, o.linearIterations, o.residual, o.tolerance, o.load};
                  s.nonlinearIterations = o.iterations;
                  if (o.converged) {
-                   std::vector<double> f(model.numDofs());
-                   model.internalForce(u.data(), f.data());
-                   model.commit();
-                   model.endBreakRounds();
-                   for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+                   commitStep(model, u, uA, duPrev);
                    inStep = 0;
                    s.outputEveryFactor = outputFactor;
                    return s;
