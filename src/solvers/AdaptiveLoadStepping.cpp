@@ -7,45 +7,58 @@
 namespace pf {
 namespace {
 
-using Kind = ParamTree::Entry::Kind;
+using S = ParameterSpec;
 
-const ParamTree::Entry* typed(const ParamTree& list, const std::string& name, Kind kind, const std::string& where,
-                              const char* what) {
-  const ParamTree::Entry* e = list.find(name);
-  if (e && e->kind != kind) throw InputError(where + ": '" + name + "' must be " + what);
-  return e;
+const std::vector<ParameterSpec>& adaptiveSpecs() {
+  static const std::vector<ParameterSpec> specs = {
+      S::integer("Maximum load step reductions in one step").need().nonNegative(),
+      S::integer("Maximum total load step reductions").need().nonNegative(),
+      S::flag("Reduce all remaining load steps").byDefault("false"),
+      S::flag("Adaptive output frequency").byDefault("false")};
+  return specs;
 }
 
-int count(const ParamTree& list, const std::string& name, const std::string& where, int least, bool required) {
-  const ParamTree::Entry* e = typed(list, name, Kind::Int, where, "an int");
-  if (!e) {
-    if (required) throw InputError(where + ": '" + name + "' is required");
-    return least;
+const std::vector<ParameterSpec>& switchSpecs() {
+  static const std::vector<ParameterSpec> specs = {S::real("Safety Factor").positive(), S::real("Fixed dt").positive(),
+                                                   S::integer("Output Frequency").atLeast(1)};
+  return specs;
+}
+
+bool ofKind(const ParamTree::Entry& e, ParameterSpec::Kind kind) {
+  using K = ParamTree::Entry::Kind;
+  switch (kind) {
+    case ParameterSpec::Kind::Double: return e.kind == K::Double || e.kind == K::Int;
+    case ParameterSpec::Kind::Int: return e.kind == K::Int;
+    case ParameterSpec::Kind::Bool: return e.kind == K::Bool;
+    default: return e.kind == K::String;
   }
-  if (e->integer < least)
-    throw InputError(where + ": '" + name + "' = " + std::to_string(e->integer) + " must be at least " +
-                     std::to_string(least));
-  return e->integer;
 }
 
-bool flag(const ParamTree& list, const std::string& name, const std::string& where) {
-  const ParamTree::Entry* e = typed(list, name, Kind::Bool, where, "a bool");
-  return e && e->flag;
-}
-
-double positive(const ParamTree& list, const std::string& name, const std::string& where) {
-  const ParamTree::Entry* e = typed(list, name, Kind::Double, where, "a double");
-  if (!e) return 0.0;
-  if (!(e->number > 0.0)) throw InputError(where + ": '" + name + "' must be positive");
-  return e->number;
-}
-
-void onlyKnown(const ParamTree& list, const std::vector<std::string>& known, const std::string& where) {
+// The list's values checked against specs as a deck's list is (applySpecs: unknown names, required ones, ranges,
+// defaults), after its own type check; `sublist` (or none) is the one sub-list it may hold, left to the caller.
+ParameterValues valuesOf(const ParamTree& list, const std::vector<ParameterSpec>& specs, const std::string& file,
+                         const std::string& path, const std::string& sublist) {
+  ParameterValues in;
+  in.inputFile = file;
+  in.path = path;
   for (const ParamTree::Entry& e : list.entries) {
-    bool ok = false;
-    for (const std::string& k : known) ok = ok || e.name == k;
-    if (!ok) throw InputError(where + ": unknown parameter '" + e.name + "'");
+    if (e.kind == ParamTree::Entry::Kind::List) {
+      if (e.name != sublist) throw InputError(in.where() + ": unknown sub-list '" + e.name + "'");
+      continue;
+    }
+    const ParameterSpec* spec = nullptr;
+    for (const ParameterSpec& s : specs) spec = s.name == e.name ? &s : spec;
+    if (spec && !ofKind(e, spec->kind))
+      throw InputError(in.where() + ": '" + e.name + "' must be of type " + kindName(spec->kind));
+    if (e.kind == ParamTree::Entry::Kind::String)
+      in.strings[e.name] = e.text;
+    else
+      in.values[e.name] = e.kind == ParamTree::Entry::Kind::Double ? e.number
+                          : e.kind == ParamTree::Entry::Kind::Int  ? e.integer
+                                                                   : (e.flag ? 1.0 : 0.0);
   }
+  applySpecs(specs, in);
+  return in;
 }
 
 }  // namespace
@@ -67,29 +80,25 @@ double halveStep(std::vector<double>& times, double tA, double tB, bool reduceRe
   return (tEnd - tA) / static_cast<double>(n);
 }
 
-AdaptiveLoadStepping parseAdaptiveLoadStepping(const ParamTree& list, const std::string& where) {
-  const std::string at = where + "/Adaptive Load-Stepping";
-  const std::string inOne = "Maximum load step reductions in one step", total = "Maximum total load step reductions";
-  onlyKnown(list, {inOne, total, "Reduce all remaining load steps", "Adaptive output frequency", "Switch to Verlet"}, at);
+AdaptiveLoadStepping parseAdaptiveLoadStepping(const ParamTree& list, const ParameterValues& solverList) {
+  const std::string path = solverList.path + "/Adaptive Load-Stepping";
+  const ParameterValues p = valuesOf(list, adaptiveSpecs(), solverList.inputFile, path, "Switch to Verlet");
   AdaptiveLoadStepping a;
   a.on = true;
-  a.maxReductionsInStep = count(list, inOne, at, 0, true);
-  a.maxTotalReductions = count(list, total, at, 0, true);
-  a.reduceRemaining = flag(list, "Reduce all remaining load steps", at);
-  a.adaptiveOutput = flag(list, "Adaptive output frequency", at);
-  const ParamTree::Entry* sw = typed(list, "Switch to Verlet", Kind::List, at, "a list");
-  if (sw) {
-    const std::string vat = at + "/Switch to Verlet";
-    onlyKnown(*sw->list, {"Safety Factor", "Fixed dt", "Output Frequency"}, vat);
+  a.maxReductionsInStep = static_cast<int>(p.get("Maximum load step reductions in one step"));
+  a.maxTotalReductions = static_cast<int>(p.get("Maximum total load step reductions"));
+  a.reduceRemaining = p.flag("Reduce all remaining load steps");
+  a.adaptiveOutput = p.flag("Adaptive output frequency");
+  if (const ParamTree::Entry* sw = list.find("Switch to Verlet")) {
+    const ParameterValues v = valuesOf(*sw->list, switchSpecs(), solverList.inputFile, path + "/Switch to Verlet", "");
+    if (!v.has("Fixed dt") && !v.has("Safety Factor"))
+      throw InputError(v.where() + ": give 'Fixed dt' or 'Safety Factor' (the explicit run's time step)");
     a.switchToVerlet = true;
-    a.verlet.fixedDt = positive(*sw->list, "Fixed dt", vat);
-    a.verlet.safetyFactor = positive(*sw->list, "Safety Factor", vat);
-    if (a.verlet.fixedDt <= 0.0 && a.verlet.safetyFactor <= 0.0)
-      throw InputError(vat + ": give 'Fixed dt' or 'Safety Factor' (the explicit run's time step)");
+    a.verlet.fixedDt = v.get("Fixed dt", 0.0);
+    a.verlet.safetyFactor = v.get("Safety Factor", 0.0);
     a.verlet.peridigmEstimate = true;  // Peridigm's critical time step, as its Verlet
-    a.verlet.where = vat;
-    a.verletOutputFrequency = count(*sw->list, "Output Frequency", vat, 1, false);
-    if (!sw->list->find("Output Frequency")) a.verletOutputFrequency = 0;
+    a.verlet.where = v.where();
+    a.verletOutputFrequency = static_cast<int>(v.get("Output Frequency", 0.0));
   }
   return a;
 }

@@ -8,6 +8,7 @@
 
 #include "VerletSolver.hpp"
 #include "core/ParamTree.hpp"
+#include "core/Parameters.hpp"
 
 namespace pf {
 
@@ -22,9 +23,9 @@ struct AdaptiveLoadStepping {
   int verletOutputFrequency = 0; // > 0: replaces the Output lists' frequency in the explicit run
 };
 
-// The sub-list `Adaptive Load-Stepping` of a QuasiStatic list (where: "input.xml: Solver/QuasiStatic"); InputError
-// naming the parameter for an unknown name, a wrong type or a value out of range.
-AdaptiveLoadStepping parseAdaptiveLoadStepping(const ParamTree& list, const std::string& where);
+// The sub-list `Adaptive Load-Stepping` of a QuasiStatic list (solverList: that list's values, for the file and the
+// path); InputError naming the parameter for an unknown name, a wrong type, a missing one or a value out of range.
+AdaptiveLoadStepping parseAdaptiveLoadStepping(const ParamTree& list, const ParameterValues& solverList);
 
 // The load times after the step [tA, tB] (tB one of times) is halved: tA + (tB - tA) / 2 goes in before tB, or with
 // reduceRemaining every step from tA on becomes equal and at most that long, ending at times.back(). Returns the

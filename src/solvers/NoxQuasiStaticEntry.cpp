@@ -52,7 +52,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
     if (it->name == "Adaptive Load-Stepping") {
       if (it->kind != ParamTree::Entry::Kind::List)
         throw InputError(p.where() + ": 'Adaptive Load-Stepping' must be a list");
-      o.adaptive = parseAdaptiveLoadStepping(*it->list, p.where());
+      o.adaptive = parseAdaptiveLoadStepping(*it->list, p);
       entries.erase(it);
       break;
     }

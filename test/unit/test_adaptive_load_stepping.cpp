@@ -39,17 +39,20 @@ TEST(AdaptiveLoadStepping, ReducingAllRemainingStepsMakesEqualStepsToTheEnd) {
 }
 
 TEST(AdaptiveLoadStepping, TheMaximaAreRequiredAndUnknownNamesRefused) {
+  pf::ParameterValues solver;
+  solver.inputFile = "d.xml";
+  solver.path = "Solver/QuasiStatic";
   ParamTree list;
   list.entries.push_back(integer("Maximum total load step reductions", 5));
-  EXPECT_THROW(pf::parseAdaptiveLoadStepping(list, "d.xml: Solver/QuasiStatic"), pf::InputError);
+  EXPECT_THROW(pf::parseAdaptiveLoadStepping(list, solver), pf::InputError);
   list.entries.push_back(integer("Maximum load step reductions in one step", 1));
-  const pf::AdaptiveLoadStepping a = pf::parseAdaptiveLoadStepping(list, "d.xml: Solver/QuasiStatic");
+  const pf::AdaptiveLoadStepping a = pf::parseAdaptiveLoadStepping(list, solver);
   EXPECT_TRUE(a.on);
   EXPECT_EQ(a.maxReductionsInStep, 1);
   EXPECT_EQ(a.maxTotalReductions, 5);
   EXPECT_FALSE(a.switchToVerlet);
   list.entries.push_back(integer("Maximum reductions", 1));
-  EXPECT_THROW(pf::parseAdaptiveLoadStepping(list, "d.xml: Solver/QuasiStatic"), pf::InputError);
+  EXPECT_THROW(pf::parseAdaptiveLoadStepping(list, solver), pf::InputError);
 }
 
 }  // namespace
