@@ -36,8 +36,9 @@ periforge_check(contact_rod_on_rod_check "contact_rod_on_rod_np2;taylor_coarse_n
   ${PY} ${REG}/contact/check_rod_on_rod.py ${CONTACT_BIN}/contact_rod_on_rod_np2 ${CONTACT_BIN}/taylor_coarse_np2)
 
 # A block sliding on a held plate with Coulomb friction (examples/contact/sliding_block.xml): its deceleration is
-# mu times its load per mass within 1 % (check_sliding_block.py), at np 1 and 2.
-foreach(np 1 2)
+# mu times its load per mass within 1 % (check_sliding_block.py), at np 2 (np 1 as well until session 26)
+# (issue 37: a deck runs at one rank count unless np 1 and 2 test different code).
+foreach(np 2)
   periforge_run(contact_sliding_block_np${np} ${PROJECT_SOURCE_DIR}/examples/contact/sliding_block.xml ${np})
   periforge_check(contact_sliding_block_np${np}_check contact_sliding_block_np${np}
     ${PY} ${REG}/contact/check_sliding_block.py ${CONTACT_BIN}/contact_sliding_block_np${np})

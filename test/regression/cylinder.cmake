@@ -15,7 +15,11 @@ foreach(np 1 2)
     set_tests_properties(cylinder_pressure_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 300)
   endif()
   # Elastic Plastic Hardening (isotropic) loaded past p_L and unloaded, against a 1D radial J2 solution
-  # written in the test (radial_j2.py). Bounds and reasons: run_cylinder_hardening.py.
+  # written in the test (radial_j2.py). Bounds and reasons: run_cylinder_hardening.py. At np 2 only (np 1 as
+  # well until session 26; the pressure's closed forms run at np 1 above) (issue 37: a deck runs at one rank count unless np 1 and 2 test different code).
+  if(np EQUAL 1)
+    continue()
+  endif()
   add_test(NAME cylinder_hardening_np${np}
            COMMAND ${PY} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cylinder/run_cylinder_hardening.py ${CYL_CMD})
   set_tests_properties(cylinder_hardening_np${np} PROPERTIES LABELS "regression" PROCESSORS ${np} TIMEOUT 300)

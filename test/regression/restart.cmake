@@ -45,7 +45,8 @@ add_test(NAME restart_plate_kill_np1_np2
          COMMAND ${PY} ${RST}/run_restart.py kill ${RST}/restart_plate_nox.xml 1 2 ${PERIFORGE_EXE} ${MPIRUN}
                  -- ${restart_plate_tols} -- ${RST}/plate_np.comp)
 set_tests_properties(restart_plate_kill_np1_np2 PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS 2)
-foreach(np 1 2)
+# At np 2, where every rank must end with the line (np 1 as well until session 26) (issue 37: a deck runs at one rank count unless np 1 and 2 test different code).
+foreach(np 2)
   add_test(NAME restart_refused_np${np}
            COMMAND ${PY} ${RST}/run_restart.py refuse ${RST}/restart_bar.xml ${np} ${PERIFORGE_EXE} ${MPIRUN})
   set_tests_properties(restart_refused_np${np} PROPERTIES TIMEOUT 300 LABELS "regression" PROCESSORS ${np})
