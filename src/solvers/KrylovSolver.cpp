@@ -20,6 +20,7 @@ extern template class Belos::PseudoBlockGmresSolMgr<double, Tpetra::MultiVector<
 #include <algorithm>
 
 #include "PairStiffness.hpp"
+#include "RigidBodyModes.hpp"
 #include "NoxParameters.hpp"
 #include "model/Model.hpp"
 #include "parallel/TpetraSupport.hpp"
@@ -62,10 +63,26 @@ Teuchos::RCP<MV> wrap(const Teuchos::RCP<const Map>& map, const double* data) {
   return Teuchos::rcp(new MV(hostView<MV>(map, data)));  // a Tpetra copy is a shallow one: still the array
 }
 
+// The rigid-body modes (RigidBodyModes.hpp) as a Tpetra multivector on the Newton vectors' map.
+Teuchos::RCP<MV> nearNullSpace(const Teuchos::RCP<const Map>& map, const Model& model) {
+  const RigidBodyModes modes = rigidBodyModes(model.coordinates(), model.numOwned(), model.layout().comm());
+  const std::size_t n = 3 * static_cast<std::size_t>(model.numOwned());
+  auto B = Teuchos::rcp(new MV(map, modes.count));
+  for (int k = 0; k < modes.count; ++k) {
+    Teuchos::ArrayRCP<double> b = B->getDataNonConst(k);
+    std::copy(modes.values.begin() + k * n, modes.values.begin() + (k + 1) * n, b.getRawPtr());
+  }
+  return B;
+}
+
 // MueLu's smoothed aggregation with ML's settings that Periforge measured (3 dofs per point, one symmetric
-// Gauss-Seidel sweep: one more Krylov iteration, 30 % less time); a "MueLu" sub-list overrides them.
-Teuchos::RCP<OP> buildMueLu(const Teuchos::RCP<Matrix>& A, Teuchos::ParameterList& linearSolver) {
+// Gauss-Seidel sweep: one more Krylov iteration, 30 % less time) and the rigid-body near-null space (without it
+// MueLu takes the translations alone, which an elastic body's aggregates cannot rotate with); a "MueLu" sub-list
+// overrides them.
+Teuchos::RCP<OP> buildMueLu(const Teuchos::RCP<Matrix>& A, const Teuchos::RCP<MV>& nullspace,
+                            Teuchos::ParameterList& linearSolver) {
   Teuchos::ParameterList p;
+  if (!nullspace.is_null()) p.sublist("user data").set("Nullspace", nullspace);
   p.set("verbosity", "none");
   p.set("multigrid algorithm", "sa");
   p.set("number of equations", 3);
@@ -118,6 +135,7 @@ struct KrylovSolver::Impl {
   Teuchos::RCP<const Map> map;
   Teuchos::RCP<Matrix> matrix;  // the pair stiffness (+ shift)
   Teuchos::RCP<OP> prec;        // built on the first solve; null for "None"
+  Teuchos::RCP<MV> nullspace;   // the rigid-body modes, for MueLu
   bool precBuilt = false;
   double scale = 1.0;
   std::string where;
@@ -145,6 +163,7 @@ KrylovSolver::KrylovSolver(const Model& model, double precBondRadius, const std:
                                           Teuchos::ArrayView<const double>(values, n));
       });
   impl_->matrix->fillComplete();
+  impl_->nullspace = nearNullSpace(impl_->map, model);
 }
 
 KrylovSolver::~KrylovSolver() = default;
@@ -161,7 +180,7 @@ void KrylovSolver::ensurePreconditioner(Teuchos::ParameterList& linearSolver) {
   // The deck's choice was validated when it was read (checkLinearSolver).
   const LinearSolverChoice choice = linearSolverChoice(linearSolver, s.where);
   if (choice.preconditioner == LinearSolverChoice::Preconditioner::MueLu)
-    s.prec = buildMueLu(s.matrix, linearSolver);
+    s.prec = buildMueLu(s.matrix, s.nullspace, linearSolver);
   else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)
     s.prec = buildIfpack2(s.matrix, linearSolver, choice.ifpack2Type);
   s.precBuilt = true;
