@@ -135,7 +135,7 @@ struct KrylovSolver::Impl {
   Teuchos::RCP<const Map> map;
   Teuchos::RCP<Matrix> matrix;  // the pair stiffness (+ shift)
   Teuchos::RCP<OP> prec;        // built on the first solve; null for "None"
-  Teuchos::RCP<MV> nullspace;   // the rigid-body modes, for MueLu
+  Teuchos::RCP<MV> nullspace;   // the rigid-body modes, for MueLu; released once the preconditioner is built
   bool precBuilt = false;
   double scale = 1.0;
   std::string where;
@@ -183,6 +183,7 @@ void KrylovSolver::ensurePreconditioner(Teuchos::ParameterList& linearSolver) {
     s.prec = buildMueLu(s.matrix, s.nullspace, linearSolver);
   else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)
     s.prec = buildIfpack2(s.matrix, linearSolver, choice.ifpack2Type);
+  s.nullspace = Teuchos::null;  // MueLu keeps what it uses; the other choices never read it
   s.precBuilt = true;
 }
 

@@ -29,7 +29,7 @@ Eigen::MatrixXd asMatrix(const pf::RigidBodyModes& m, int n) {
   return B;
 }
 
-// The largest |(v_p - v_q) . (x_p - x_q)| over all pairs, relative to |v| |x| scales.
+// The largest |(v_p - v_q) . (x_p - x_q)| over all pairs (absolute: coordinates and modes are O(1) to O(5)).
 double worstStretchRate(const std::vector<double>& x, const double* v, int n) {
   double worst = 0;
   for (int p = 0; p < n; ++p)
