@@ -4,7 +4,7 @@
 #include <BelosPseudoBlockGmresSolMgr.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <Ifpack2_Factory.hpp>
-#include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Teuchos_ParameterListExceptions.hpp>
 #include <type_traits>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -18,10 +18,13 @@
 extern template class Belos::PseudoBlockGmresSolMgr<double, Tpetra::MultiVector<double>, Tpetra::Operator<double>>;
 
 #include <algorithm>
+#include <sstream>
 
 #include "PairStiffness.hpp"
-#include "RigidBodyModes.hpp"
+#include "MueLuPreconditioner.hpp"
 #include "NoxParameters.hpp"
+#include "Solver.hpp"
+#include "core/InputError.hpp"
 #include "model/Model.hpp"
 #include "parallel/TpetraSupport.hpp"
 
@@ -59,40 +62,26 @@ class ActionOperator : public OP {
   mutable std::vector<double> tmp_;
 };
 
+// A Teuchos exception's text without its source location and throw count, on one line: "Error, the parameter
+// {name=...} in the parameter (sub)list ... was not found in the list of valid parameters!" (the list that follows
+// a blank line is left out).
+std::string libraryMessage(const std::exception& e) {
+  std::istringstream in(e.what());
+  std::string line, out;
+  while (std::getline(in, line)) {
+    const bool skip = line.rfind("Throw ", 0) == 0 || line.find(".hpp:") != std::string::npos ||
+                      line.find(".cpp:") != std::string::npos;
+    if (line.empty() || skip) {
+      if (!out.empty()) break;
+      continue;
+    }
+    out += (out.empty() ? "" : " ") + line;
+  }
+  return out.empty() ? std::string(e.what()) : out;
+}
+
 Teuchos::RCP<MV> wrap(const Teuchos::RCP<const Map>& map, const double* data) {
   return Teuchos::rcp(new MV(hostView<MV>(map, data)));  // a Tpetra copy is a shallow one: still the array
-}
-
-// The rigid-body modes (RigidBodyModes.hpp) as a Tpetra multivector on the Newton vectors' map.
-Teuchos::RCP<MV> nearNullSpace(const Teuchos::RCP<const Map>& map, const Model& model) {
-  const RigidBodyModes modes = rigidBodyModes(model.coordinates(), model.numOwned(), model.layout().comm());
-  const std::size_t n = 3 * static_cast<std::size_t>(model.numOwned());
-  auto B = Teuchos::rcp(new MV(map, modes.count));
-  for (int k = 0; k < modes.count; ++k) {
-    Teuchos::ArrayRCP<double> b = B->getDataNonConst(k);
-    std::copy(modes.values.begin() + k * n, modes.values.begin() + (k + 1) * n, b.getRawPtr());
-  }
-  return B;
-}
-
-// MueLu's smoothed aggregation with ML's settings that Periforge measured (3 dofs per point, one symmetric
-// Gauss-Seidel sweep: one more Krylov iteration, 30 % less time) and the rigid-body near-null space (without it
-// MueLu takes the translations alone, which an elastic body's aggregates cannot rotate with); a "MueLu" sub-list
-// overrides them.
-Teuchos::RCP<OP> buildMueLu(const Teuchos::RCP<Matrix>& A, const Teuchos::RCP<MV>& nullspace,
-                            Teuchos::ParameterList& linearSolver) {
-  Teuchos::ParameterList p;
-  if (!nullspace.is_null()) p.sublist("user data").set("Nullspace", nullspace);
-  p.set("verbosity", "none");
-  p.set("multigrid algorithm", "sa");
-  p.set("number of equations", 3);
-  p.set("coarse: max size", 500);
-  p.set("smoother: type", "RELAXATION");
-  p.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
-  p.sublist("smoother: params").set("relaxation: sweeps", 1);
-  if (linearSolver.isSublist("MueLu")) p.setParameters(linearSolver.sublist("MueLu"));
-  Teuchos::RCP<OP> op = A;
-  return MueLu::CreateTpetraPreconditioner<double, Map::local_ordinal_type, GO, Map::node_type>(op, p);
 }
 
 // Ifpack's parameter names as Ifpack2's ("fact: level-of-fill" is RILUK's "fact: iluk level-of-fill"); an
@@ -135,7 +124,7 @@ struct KrylovSolver::Impl {
   Teuchos::RCP<const Map> map;
   Teuchos::RCP<Matrix> matrix;  // the pair stiffness (+ shift)
   Teuchos::RCP<OP> prec;        // built on the first solve; null for "None"
-  Teuchos::RCP<MV> nullspace;   // the rigid-body modes, for MueLu; released once the preconditioner is built
+  MueLuInputs mueLu;            // released once the preconditioner is built
   bool precBuilt = false;
   double scale = 1.0;
   std::string where;
@@ -163,7 +152,7 @@ KrylovSolver::KrylovSolver(const Model& model, double precBondRadius, const std:
                                           Teuchos::ArrayView<const double>(values, n));
       });
   impl_->matrix->fillComplete();
-  impl_->nullspace = nearNullSpace(impl_->map, model);
+  impl_->mueLu = mueLuInputs(impl_->map, model);
 }
 
 KrylovSolver::~KrylovSolver() = default;
@@ -179,11 +168,21 @@ void KrylovSolver::ensurePreconditioner(Teuchos::ParameterList& linearSolver) {
   if (s.precBuilt) return;
   // The deck's choice was validated when it was read (checkLinearSolver).
   const LinearSolverChoice choice = linearSolverChoice(linearSolver, s.where);
-  if (choice.preconditioner == LinearSolverChoice::Preconditioner::MueLu)
-    s.prec = buildMueLu(s.matrix, s.nullspace, linearSolver);
-  else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)
-    s.prec = buildIfpack2(s.matrix, linearSolver, choice.ifpack2Type);
-  s.nullspace = Teuchos::null;  // MueLu keeps what it uses; the other choices never read it
+  // A library's refusal ends the run with its own words: a parameter of the deck's "MueLu" or "Ifpack" sub-list it
+  // does not take is an input error; anything else (a factorisation that breaks down) a solver failure. Inside the
+  // Newton solve either would read as a step that did not converge and fall back to dynamic relaxation unsaid.
+  const std::string at = s.where + "/Direction/Newton/Linear Solver: the preconditioner could not be built: ";
+  try {
+    if (choice.preconditioner == LinearSolverChoice::Preconditioner::MueLu)
+      s.prec = buildMueLu(s.matrix, s.mueLu, linearSolver);
+    else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)
+      s.prec = buildIfpack2(s.matrix, linearSolver, choice.ifpack2Type);
+  } catch (const Teuchos::Exceptions::InvalidParameter& e) {
+    throw InputError(at + libraryMessage(e));
+  } catch (const std::exception& e) {
+    throw SolverFailure(at + libraryMessage(e));
+  }
+  s.mueLu = MueLuInputs();  // MueLu keeps what it uses; the other choices never read it
   s.precBuilt = true;
 }
 

@@ -10,6 +10,7 @@
 #include "LoadStepping.hpp"
 #include "NoxParameters.hpp"
 #include "NoxStepGroup.hpp"
+#include "Solver.hpp"
 #include "StepEquations.hpp"
 #include "core/InputError.hpp"
 #include "core/StopSignal.hpp"
@@ -130,6 +131,8 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
     throw;  // the deck's linear solver list names something unknown
   } catch (const Interrupted&) {
     throw;  // a stop signal, not a failed step
+  } catch (const SolverFailure&) {
+    throw;  // the preconditioner cannot be built (KrylovSolver): no step would converge
   } catch (const std::exception&) {
     status = NOX::StatusTest::Failed;
   } catch (...) {  // NOX throws plain strings ("NOX Error") where a direction or line search cannot go on

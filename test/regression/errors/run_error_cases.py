@@ -130,6 +130,14 @@ CASES = [
        '<ParameterList name="ML"><Parameter name="max levels" type="int" value="3"/></ParameterList>'
        '</ParameterList></ParameterList></ParameterList></ParameterList>')],
      ["Linear Solver", "'ML'", "MueLu"]),
+    # Issue 35: MueLu's refusal used to read as a step that did not converge (silent fall-back to ADR).
+    ("MueLu parameter MueLu does not take",
+     [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<ParameterList name="NOXQuasiStatic"><Parameter name="Number of Load Steps" type="int" value="2"/>'
+       '<ParameterList name="Direction"><ParameterList name="Newton"><ParameterList name="Linear Solver">'
+       '<ParameterList name="MueLu"><Parameter name="coarse: maxsize" type="int" value="30"/></ParameterList>'
+       '</ParameterList></ParameterList></ParameterList></ParameterList>')],
+     ["Linear Solver", "preconditioner could not be built", "coarse: maxsize"]),
     ("unsupported Peridigm output variable",
      [('<ParameterList name="Output Variables">', '<ParameterList name="Output Variables">\n      <Parameter name="Strain_Energy" type="bool" value="true"/>')],
      ["Strain_Energy", "not supported"]),
