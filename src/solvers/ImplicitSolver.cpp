@@ -219,6 +219,7 @@ void ImplicitSolver::run(Model& model, std::vector<double>& u, std::vector<doubl
     report.nonlinearIterations = o.iterations;  // Peridigm's Implicit counts each Newton iteration
     observer.onStep(report, u, v, f);
   }
+  printWork(model, engine.work());
 }
 
 }  // namespace pf

@@ -4,6 +4,7 @@
 #include <BelosPseudoBlockGmresSolMgr.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <Ifpack2_Factory.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_ParameterListExceptions.hpp>
 #include <type_traits>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -22,6 +23,7 @@ extern template class Belos::PseudoBlockGmresSolMgr<double, Tpetra::MultiVector<
 
 #include "PairStiffness.hpp"
 #include "MueLuPreconditioner.hpp"
+#include "NewtonWork.hpp"
 #include "NoxParameters.hpp"
 #include "Solver.hpp"
 #include "core/InputError.hpp"
@@ -80,6 +82,23 @@ std::string libraryMessage(const std::exception& e) {
   return out.empty() ? std::string(e.what()) : out;
 }
 
+// The preconditioner as GMRES sees it: each application counted and timed (NewtonWork).
+class CountedOperator : public OP {
+ public:
+  CountedOperator(Teuchos::RCP<OP> inner, NewtonWork& work) : inner_(std::move(inner)), work_(work) {}
+  Teuchos::RCP<const Map> getDomainMap() const override { return inner_->getDomainMap(); }
+  Teuchos::RCP<const Map> getRangeMap() const override { return inner_->getRangeMap(); }
+  void apply(const MV& X, MV& Y, Teuchos::ETransp mode, double alpha, double beta) const override {
+    const WorkTimer timer(&work_.preconditionerSeconds);
+    work_.preconditionerApplications += static_cast<long>(X.getNumVectors());
+    inner_->apply(X, Y, mode, alpha, beta);
+  }
+
+ private:
+  Teuchos::RCP<OP> inner_;
+  NewtonWork& work_;
+};
+
 Teuchos::RCP<MV> wrap(const Teuchos::RCP<const Map>& map, const double* data) {
   return Teuchos::rcp(new MV(hostView<MV>(map, data)));  // a Tpetra copy is a shallow one: still the array
 }
@@ -128,12 +147,14 @@ struct KrylovSolver::Impl {
   bool precBuilt = false;
   double scale = 1.0;
   std::string where;
+  NewtonWork* work = nullptr;
 };
 
 KrylovSolver::KrylovSolver(const Model& model, double precBondRadius, const std::vector<double>* shift,
-                           std::string where)
+                           std::string where, NewtonWork* work)
     : impl_(std::make_unique<Impl>()) {
   impl_->where = std::move(where);
+  impl_->work = work;
   ensureKokkos();
   const auto comm = teuchosComm(model.layout().comm());
   static_assert(std::is_same<GO, long long>::value, "the pair rows' columns are passed to Tpetra as they are");
@@ -171,18 +192,30 @@ void KrylovSolver::ensurePreconditioner(Teuchos::ParameterList& linearSolver) {
   // A library's refusal ends the run with its own words: a parameter of the deck's "MueLu" or "Ifpack" sub-list it
   // does not take is an input error; anything else (a factorisation that breaks down) a solver failure. Inside the
   // Newton solve either would read as a step that did not converge and fall back to dynamic relaxation unsaid.
+  // Every rank learns of a failure on one (an Ifpack2 factorisation is local), so none waits in a later collective.
   const std::string at = s.where + "/Direction/Newton/Linear Solver: the preconditioner could not be built: ";
+  const WorkTimer timer(s.work ? &s.work->buildSeconds : nullptr);
+  if (s.work) ++s.work->preconditionerBuilds;
+  int failure = 0;  // 1: a parameter the library does not take, 2: another failure
+  std::string message;
   try {
     if (choice.preconditioner == LinearSolverChoice::Preconditioner::MueLu)
       s.prec = buildMueLu(s.matrix, s.mueLu, linearSolver);
     else if (choice.preconditioner == LinearSolverChoice::Preconditioner::Ifpack2)
       s.prec = buildIfpack2(s.matrix, linearSolver, choice.ifpack2Type);
   } catch (const Teuchos::Exceptions::InvalidParameter& e) {
-    throw InputError(at + libraryMessage(e));
+    failure = 1;
+    message = libraryMessage(e);
   } catch (const std::exception& e) {
-    throw SolverFailure(at + libraryMessage(e));
+    failure = 2;
+    message = libraryMessage(e);
   }
+  int anyFailure = 0;
+  Teuchos::reduceAll(*s.map->getComm(), Teuchos::REDUCE_MAX, failure, Teuchos::outArg(anyFailure));
+  if (anyFailure == 1) throw InputError(at + (message.empty() ? "on another rank" : message));
+  if (anyFailure == 2) throw SolverFailure(at + (message.empty() ? "on another rank" : message));
   s.mueLu = MueLuInputs();  // MueLu keeps what it uses; the other choices never read it
+  if (s.work && !s.prec.is_null()) s.prec = Teuchos::rcp(new CountedOperator(s.prec, *s.work));
   s.precBuilt = true;
 }
 
@@ -202,6 +235,7 @@ KrylovOutcome KrylovSolver::solve(const TangentAction& J, const double* rhs, dou
                                   Teuchos::ParameterList& linearSolver) {
   Impl& s = *impl_;
   ensurePreconditioner(linearSolver);
+  const WorkTimer timer(s.work ? &s.work->krylovSeconds : nullptr);
   const int maxIterations = linearSolver.get<int>("Max Iterations", 800);
   const int krylov = std::max(1, std::min(linearSolver.get<int>("Size of Krylov Subspace", 200), maxIterations));
   auto params = Teuchos::rcp(new Teuchos::ParameterList);
@@ -233,6 +267,7 @@ KrylovOutcome KrylovSolver::solve(const TangentAction& J, const double* rhs, dou
     out.failed = true;
   }
   out.iterations = gmres.getNumIters();
+  if (s.work) s.work->krylovIterations += out.iterations;
   return out;
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Part of the NOX adapter: the Krylov solve of the Newton step on Trilinos' Tpetra stack. The operator is given
-// by its action on plain arrays (matrix-free); the preconditioner (MueLu's smoothed aggregation or an Ifpack2
-// factorisation, per the deck's "Linear Solver" list) is built once, on the first solve, from the assembled pair
-// stiffness (PairStiffness.hpp) and reused by every later solve of the engine.
+// by its action on plain arrays (matrix-free); the preconditioner (MueLu's smoothed aggregation,
+// MueLuPreconditioner.hpp, or an Ifpack2 factorisation, per the deck's "Linear Solver" list) is built once, on the
+// first solve, from the assembled pair stiffness (PairStiffness.hpp) and reused by every later solve of the engine.
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_RCP.hpp>
 #include <Thyra_VectorSpaceBase_decl.hpp>
@@ -15,6 +15,7 @@
 namespace pf {
 
 class Model;
+struct NewtonWork;
 
 // y = J dx on owned dofs; false when it cannot be evaluated (a material failure).
 using TangentAction = std::function<bool(const double* dx, double* y)>;
@@ -27,8 +28,10 @@ struct KrylovOutcome {
 
 class KrylovSolver {
  public:
-  // Collective. shift: 3 per owned node (a Newmark step's mass term) or null; where: the deck's solver list.
-  KrylovSolver(const Model& model, double precBondRadius, const std::vector<double>* shift, std::string where);
+  // Collective. shift: 3 per owned node (a Newmark step's mass term) or null; where: the deck's solver list;
+  // work: counts and times the solves, preconditioner builds and applications (null: not counted).
+  KrylovSolver(const Model& model, double precBondRadius, const std::vector<double>* shift, std::string where,
+               NewtonWork* work = nullptr);
   ~KrylovSolver();
   // The pair stiffness' mean free diagonal: the weight of prescribed rows in the residual.
   double scale() const;

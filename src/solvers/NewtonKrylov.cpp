@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <csignal>
+#include <cstdio>
 
 #include "BreakRounds.hpp"
 #include "KrylovSolver.hpp"
@@ -71,6 +72,12 @@ class ForceResidualTest : public NOX::StatusTest::Generic {
 
 }  // namespace
 
+void printWork(const Model& model, const NewtonWork& work) {
+  if (model.layout().rank() != 0) return;
+  std::printf("%s\n", work.summary().c_str());
+  std::fflush(stdout);
+}
+
 NewtonKrylov::NewtonKrylov(NewtonKrylovOptions o) : opt_(std::move(o)) {}
 
 NewtonKrylov::~NewtonKrylov() = default;
@@ -80,10 +87,13 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
   // The pair stiffness depends on the reference configuration only (and a Newmark engine's fixed mass
   // term): built once, with its preconditioner, for the engine's life; rebuilding it per step cost more than
   // the Krylov solves.
-  if (!krylov_) krylov_ = std::make_unique<KrylovSolver>(model, opt_.precBondRadius, inertia ? &inertia->coefficient : nullptr,
-                                             opt_.where);
-  StepResidual residual(model, t, u, krylov_->scale(), inertia);  // prescribed values were set by the predictor
-  StepTangent tangent(model, krylov_->scale(), inertia, opt_.exactJacobian);
+  const WorkTimer timer(&work_.seconds);
+  if (!krylov_)
+    krylov_ = std::make_unique<KrylovSolver>(model, opt_.precBondRadius, inertia ? &inertia->coefficient : nullptr,
+                                             opt_.where, &work_);
+  // prescribed values were set by the predictor
+  StepResidual residual(model, t, u, krylov_->scale(), inertia, &work_);
+  StepTangent tangent(model, krylov_->scale(), inertia, opt_.exactJacobian, &work_);
   StepShared shared;
   shared.residual = &residual;
   shared.tangent = &tangent;
@@ -124,6 +134,7 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
   try {
     status = solver->solve();
     out.iterations = solver->getNumIterations();
+    work_.newtonIterations += out.iterations;
     if (ls.isSublist("Output"))
       out.linearIterations = ls.sublist("Output").get<int>("Total Number of Linear Iterations", 0);
     dynamic_cast<const NoxStepGroup&>(solver->getSolutionGroup()).copyX(u);

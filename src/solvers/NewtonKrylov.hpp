@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "NewtonWork.hpp"
 #include "core/ParamTree.hpp"
 
 namespace pf {
@@ -54,6 +55,9 @@ struct NewtonOutcome {
   double peridigmResidual = 0;         // the last residual in Peridigm's QuasiStatic measure (ResidualNorms)
 };
 
+// Rank 0 prints work.summary() (the end of a run).
+void printWork(const Model& model, const NewtonWork& work);
+
 class NewtonKrylov {
  public:
   explicit NewtonKrylov(NewtonKrylovOptions o);
@@ -69,10 +73,13 @@ class NewtonKrylov {
   NewtonOutcome solveWithBreaks(Model& model, std::vector<double>& u, double t, const Inertia* inertia = nullptr,
                                 double loadFloor = 0.0);
   const NewtonKrylovOptions& options() const { return opt_; }
+  // The engine's work so far (all its solves).
+  const NewtonWork& work() const { return work_; }
 
  private:
   NewtonKrylovOptions opt_;
   std::unique_ptr<KrylovSolver> krylov_;  // pair stiffness and its preconditioner: built on first use, kept
+  NewtonWork work_;
 };
 
 }  // namespace pf

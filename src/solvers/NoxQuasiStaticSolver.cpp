@@ -85,6 +85,7 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
                  return s;
                },
                resume);
+  printWork(model, newton_.work());
 }
 
 namespace {
@@ -169,6 +170,7 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
                  return s;
                },
                nullptr);
+  printWork(model, newton_.work());
   if (switchAt < 0.0) return;
   if (root) std::printf("periforge: QuasiStatic: switching to Verlet at t = %g (Adaptive Load-Stepping)\n", switchAt);
   VerletSolver verlet(a.verlet);

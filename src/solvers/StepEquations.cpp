@@ -10,8 +10,9 @@
 
 namespace pf {
 
-StepResidual::StepResidual(Model& model, double t, std::vector<double> xbar, double scale, const Inertia* inertia)
-    : model_(model), xbar_(std::move(xbar)), scale_(scale), inertia_(inertia), u_(model.numDofs()),
+StepResidual::StepResidual(Model& model, double t, std::vector<double> xbar, double scale, const Inertia* inertia,
+                           NewtonWork* work)
+    : model_(model), xbar_(std::move(xbar)), scale_(scale), inertia_(inertia), work_(work), u_(model.numDofs()),
       f_(model.numDofs()), fAccepted_(model.numDofs()), b_(model.numDofs()), load_(model.numDofs()),
       loadAccepted_(model.numDofs()) {
   model.bodyForce(t, b_.data());
@@ -19,6 +20,8 @@ StepResidual::StepResidual(Model& model, double t, std::vector<double> xbar, dou
 }
 
 bool StepResidual::evaluate(const double* x, double* F, bool accepted) {
+  const WorkTimer timer(work_ ? &work_->residualSeconds : nullptr);
+  if (work_) ++work_->residuals;
   const std::vector<char>& fixed = model_.prescribedMask();
   const int n = model_.numDofs();
   std::copy(x, x + n, u_.begin());
@@ -41,8 +44,8 @@ bool StepResidual::evaluate(const double* x, double* F, bool accepted) {
 
 ResidualNorms StepResidual::norms() const { return residualNorms(model_, fAccepted_, loadAccepted_); }
 
-StepTangent::StepTangent(Model& model, double scale, const Inertia* inertia, bool exact)
-    : model_(model), scale_(scale), inertia_(inertia), exact_(exact && model.hasExactTangent()),
+StepTangent::StepTangent(Model& model, double scale, const Inertia* inertia, bool exact, NewtonWork* work)
+    : model_(model), scale_(scale), inertia_(inertia), exact_(exact && model.hasExactTangent()), work_(work),
       u_(model.numDofs()), df_(model.numDofs()), f0_(model.numDofs()), up_(model.numDofs()) {
   double shortest = std::numeric_limits<double>::max();
   for (double r : model.layout().family().refLength) shortest = std::min(shortest, r);
@@ -54,6 +57,7 @@ StepTangent::StepTangent(Model& model, double scale, const Inertia* inertia, boo
 bool StepTangent::lineariseAt(const double* x) {
   std::copy(x, x + model_.numDofs(), u_.begin());
   if (exact_) return true;
+  const WorkTimer timer(work_ ? &work_->tangentSeconds : nullptr);  // the difference's base force
   try {
     model_.internalForce(u_.data(), f0_.data());
   } catch (const ConstitutiveFailure&) {
@@ -63,6 +67,8 @@ bool StepTangent::lineariseAt(const double* x) {
 }
 
 bool StepTangent::apply(const double* dx, double* y) {
+  const WorkTimer timer(work_ ? &work_->tangentSeconds : nullptr);
+  if (work_) ++work_->tangentProducts;
   const std::vector<char>& fixed = model_.prescribedMask();
   const int n = model_.numDofs();
   if (exact_) {

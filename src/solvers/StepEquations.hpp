@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "LoadStepping.hpp"
+#include "NewtonWork.hpp"
 
 namespace pf {
 
@@ -15,7 +16,9 @@ struct Inertia;
 
 class StepResidual {
  public:
-  StepResidual(Model& model, double t, std::vector<double> xbar, double scale, const Inertia* inertia);
+  // work: counts and times the evaluations (null: not counted).
+  StepResidual(Model& model, double t, std::vector<double> xbar, double scale, const Inertia* inertia,
+               NewtonWork* work = nullptr);
   // F at x. accepted: this is an iterate's residual (NOX's own evaluation, not a perturbed one), whose
   // norms become norms(). False when a material cannot update.
   bool evaluate(const double* x, double* F, bool accepted);
@@ -29,6 +32,7 @@ class StepResidual {
   std::vector<double> xbar_;
   double scale_;
   const Inertia* inertia_;
+  NewtonWork* work_;
   std::vector<double> u_, f_, fAccepted_, b_, load_, loadAccepted_;  // load: b - c (x - u~)
   std::function<void(const ResidualNorms&)> onResidual_;
 };
@@ -38,7 +42,8 @@ class StepResidual {
 // the model's shortest bond over max|dx| (a step scaled by |x|, NOX's choice, is ~0 at the first load step).
 class StepTangent {
  public:
-  StepTangent(Model& model, double scale, const Inertia* inertia, bool exact);
+  // work: counts and times the products (null: not counted).
+  StepTangent(Model& model, double scale, const Inertia* inertia, bool exact, NewtonWork* work = nullptr);
   bool exact() const { return exact_; }
   // The point x the action linearises at; false when the force cannot be evaluated there.
   bool lineariseAt(const double* x);
@@ -50,6 +55,7 @@ class StepTangent {
   double scale_, step_ = 0;
   const Inertia* inertia_;
   bool exact_;
+  NewtonWork* work_;
   std::vector<double> u_, df_, f0_, up_;
 };
 

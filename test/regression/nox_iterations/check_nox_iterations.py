@@ -5,6 +5,10 @@ bar_3d_nox.xml, 3 load steps, run at a loose and at a tight Relative Tolerance. 
 the initial state and then the running sum of the NOX steps the solver printed per load step (Peridigm's rule,
 executeNOXQuasiStatic: one NOX::Solver::step() per Newton iteration, one for a solve whose initial guess already
 passes); the tight run must need more of them than the loose one (the count follows the work, not a constant).
+The run's closing "NOX work" line (src/solvers/NewtonWork.hpp, counted where the work happens) must agree with the
+per-step lines (NOX's and Belos' own counts): the same Newton and GMRES totals, one preconditioner build, at least
+one tangent product and one preconditioner application per GMRES iteration, at least one residual per Newton
+iteration and per solve.
 
 usage: check_nox_iterations.py PERIFORGE BAR_NOX_DECK
 """
@@ -42,9 +46,34 @@ def run(exe, base, tolerance, work):
     if p.returncode != 0:
         sys.exit("run failed (tolerance %g): %s" % (tolerance, (p.stdout + p.stderr)[-800:]))
     per_step = [int(n) for n in re.findall(r"Newton iterations\s+(\d+)", p.stdout)]
+    check_work_line(p.stdout, per_step, tolerance)
     d = netCDF4.Dataset(os.path.join(work, "bar_3d_nox.e"))
     written = [float(x) for x in exodus.global_variable(d, "Nonlinear_Solver_Iterations")]
     return per_step, written
+
+
+def check_work_line(stdout, per_step, tolerance):
+    linear = sum(int(n) for n in re.findall(r"\(linear\s+(\d+)\)", stdout))
+    m = re.search(r"NOX work: (\d+) Newton iterations, (\d+) GMRES iterations; (\d+) residuals .*?, (\d+) tangent "
+                  r"products .*?, (\d+) preconditioner applications .*?, (\d+) preconditioner builds", stdout)
+    if not m:
+        sys.exit("tolerance %g: no 'NOX work' line in the output" % tolerance)
+    newton, gmres, residuals, products, applications, builds = (int(g) for g in m.groups())
+    problems = []
+    if newton != sum(per_step):
+        problems.append("Newton iterations %d, the steps printed %d" % (newton, sum(per_step)))
+    if gmres != linear:
+        problems.append("GMRES iterations %d, the steps printed %d" % (gmres, linear))
+    if builds != 1:
+        problems.append("%d preconditioner builds (one per run)" % builds)
+    if products < gmres or applications < gmres:
+        problems.append("%d products and %d preconditioner applications for %d GMRES iterations"
+                        % (products, applications, gmres))
+    if residuals < newton + len(per_step):
+        problems.append("%d residuals for %d Newton iterations in %d solves" % (residuals, newton, len(per_step)))
+    if problems:
+        sys.exit("tolerance %g: the NOX work line disagrees: %s" % (tolerance, "; ".join(problems)))
+    print("Relative Tolerance %g: %s" % (tolerance, m.group(0)))
 
 
 def main():
