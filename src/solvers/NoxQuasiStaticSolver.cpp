@@ -26,6 +26,17 @@ void commitStep(Model& model, const std::vector<double>& u, const std::vector<do
   for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
 }
 
+// A step's residual and bound in the measure the deck set, for its messages: Peridigm's ||r||_2 + 20 ||r||_inf against
+// its Absolute Tolerance for Peridigm's QuasiStatic with one, else the force residual against the relative bound (0
+// when the deck gives only an absolute tolerance: printing it said "tolerance 0").
+struct DeckMeasure {
+  double residual, tolerance;
+};
+DeckMeasure deckMeasure(const NewtonKrylovOptions& newton, const NewtonOutcome& o) {
+  if (newton.peridigmAbsolute && newton.absoluteTolerance > 0.0) return {o.peridigmResidual, newton.absoluteTolerance};
+  return {o.residual, o.tolerance};
+}
+
 }  // namespace
 
 NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::vector<double>& u,
@@ -43,9 +54,10 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   }
   model.rollback();
   u = uA;
+  const DeckMeasure m = deckMeasure(opt_.newton, o);
   if (depth < opt_.maxCuts) {
     if (root) std::printf("  Newton did not converge on [%g, %g] (residual %.3e, tolerance %.3e): cutting the step\n",
-                          tA, tB, o.residual, o.tolerance);
+                          tA, tB, m.residual, m.tolerance);
     const double tm = 0.5 * (tA + tB);
     std::vector<double> half(duPrev);
     for (double& d : half) d *= 0.5;
@@ -127,10 +139,8 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
                  const std::vector<double> uA(u);
                  predictStep(model, tB, u, duPrev);
                  Outcome o = newton_.solveWithBreaks(model, u, tB, nullptr, loadFloor);
-                 // The step's residual and bound in the deck's measure: Peridigm's ||r||_2 + 20 ||r||_inf against
-                 // its Absolute Tolerance, else the force residual against the relative bound.
-                 const double tol = peridigmAbs ? opt_.newton.absoluteTolerance : o.tolerance;
-                 const double res = peridigmAbs ? o.peridigmResidual : o.residual;
+                 const DeckMeasure m = deckMeasure(opt_.newton, o);
+                 const double tol = m.tolerance, res = m.residual;
                  // Peridigm accepts a step whose residual ends within 100 times its tolerance, with a warning.
                  if (!o.converged && peridigmAbs && res < 100.0 * tol) {
                    if (root) std::printf("  step to t = %g accepted at residual %.3e (tolerance %.3e), as Peridigm\n",
