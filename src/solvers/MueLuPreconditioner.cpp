@@ -50,7 +50,7 @@ MueLuInputs mueLuInputs(const Teuchos::RCP<const Map>& dofMap, const Model& mode
 // The coarsest level on one rank: MueLu solves its coarsest level with Amesos2's KLU2, the only direct solver
 // Debian's Trilinos 13.2 enables, and KLU2 there returns a wrong solution for a matrix spread over more than one
 // rank (a 1D Laplacian of 8 rows at np 2: relative error 0.5; the beam's one-level preconditioner: 1.5, against
-// 3e-11 at np 1; test/mpi/test_coarse_direct_solve.cpp, docs/benchmark-log.md "MueLu's near-null space"). At np 2
+// 3e-11 at np 1; test/mpi/test_coarse_direct_solve.cpp, docs/benchmark-log.md "MueLu's coarse level at np > 1"). At np 2
 // every Krylov solve therefore met a wrong coarse correction (the beam: 1 566 GMRES iterations against 562 at
 // np 1). MueLu's repartitioning from level 1 with more rows per rank than the coarsest level can have (`coarse:
 // max size`) puts that level on one rank, where KLU2 is exact; a larger level keeps its ranks unless it is

@@ -31,10 +31,12 @@ void commitStep(Model& model, const std::vector<double>& u, const std::vector<do
 // when the deck gives only an absolute tolerance: printing it said "tolerance 0").
 struct DeckMeasure {
   double residual, tolerance;
+  bool peridigm;  // Peridigm's measure against its Absolute Tolerance
 };
 DeckMeasure deckMeasure(const NewtonKrylovOptions& newton, const NewtonOutcome& o) {
-  if (newton.peridigmAbsolute && newton.absoluteTolerance > 0.0) return {o.peridigmResidual, newton.absoluteTolerance};
-  return {o.residual, o.tolerance};
+  if (newton.peridigmAbsolute && newton.absoluteTolerance > 0.0)
+    return {o.peridigmResidual, newton.absoluteTolerance, true};
+  return {o.residual, o.tolerance, false};
 }
 
 }  // namespace
@@ -131,7 +133,6 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
   std::vector<double> times(given);
   int inStep = 0, total = 0, outputFactor = 1;
   double switchAt = -1.0;  // >= 0: the explicit run starts there
-  const bool peridigmAbs = opt_.newton.peridigmAbsolute && opt_.newton.absoluteTolerance > 0.0;
   step_ = 0;
   runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, double loadFloor) {
@@ -142,7 +143,7 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
                  const DeckMeasure m = deckMeasure(opt_.newton, o);
                  const double tol = m.tolerance, res = m.residual;
                  // Peridigm accepts a step whose residual ends within 100 times its tolerance, with a warning.
-                 if (!o.converged && peridigmAbs && res < 100.0 * tol) {
+                 if (!o.converged && m.peridigm && res < 100.0 * tol) {
                    if (root) std::printf("  step to t = %g accepted at residual %.3e (tolerance %.3e), as Peridigm\n",
                                          tB, res, tol);
                    o.converged = true;
