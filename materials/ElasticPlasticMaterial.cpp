@@ -167,23 +167,58 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
   }
 }
 
+namespace {
+// The committed fields the tangent reads, with the shear correction factor: set by the first force evaluation
+// (computeForce); a derivative before any computes it into own.
+J2Fields tangentFields(const FamilyView& fam, const StateStore& state, bool shearCorrection, std::vector<double>& own) {
+  J2Fields f = committedFields(state);
+  const double* scf = state.committed("Surface_Correction_Factor");  // not history: the trial array
+  if (shearCorrection && fam.begin < fam.end && !(scf[fam.begin] > 0.0)) {
+    own.assign(static_cast<std::size_t>(fam.end), 1.0);
+    osbShearCorrectionFactor(fam, own.data());
+    scf = own.data();
+  }
+  f.scf = shearCorrection ? scf : nullptr;
+  return f;
+}
+
+// The consistent tangent kept at one point (OsbPlasticTangent.hpp J2Tangent).
+class J2Linearisation : public MaterialLinearisation {
+ public:
+  J2Linearisation(const J2Parameters& p, bool shearCorrection) : p_(p), shearCorrection_(shearCorrection) {}
+  // The committed fields read at update stay in place until the next: the state commits between Newton solves.
+  bool update(const FamilyView& fam, const double* y, const StateStore& state) override {
+    fields_ = tangentFields(fam, state, shearCorrection_, ownScf_);
+    return osbJ2Linearise(fam, p_, y, fields_, tangent_);
+  }
+  void apply(const FamilyView& fam, const double* dy, double* dforce) const override {
+    osbJ2TangentProduct(fam, p_, fields_, tangent_, dy, dforce);
+  }
+  std::size_t bytes() const override { return tangent_.bytes(); }
+
+ private:
+  J2Parameters p_;
+  bool shearCorrection_;
+  J2Fields fields_{};
+  std::vector<double> ownScf_;
+  J2Tangent tangent_;
+};
+}  // namespace
+
 bool ElasticPlasticMaterial::forceDerivative(const FamilyView& fam, const double* y, const double* dy,
                                              const StateStore& state, double* dforce) const {
   if (disablePlasticity_) {
     osbElasticForceDerivative(fam, params_.osb, y, dy, dforce);
     return true;
   }
-  J2Fields f = committedFields(state);
-  // The factor is set by the first force evaluation (computeForce); a derivative before any is computed here.
   std::vector<double> own;
-  const double* scf = state.committed("Surface_Correction_Factor");  // not history: the trial array
-  if (shearCorrection_ && fam.begin < fam.end && !(scf[fam.begin] > 0.0)) {
-    own.assign(static_cast<std::size_t>(fam.end), 1.0);
-    osbShearCorrectionFactor(fam, own.data());
-    scf = own.data();
-  }
-  f.scf = shearCorrection_ ? scf : nullptr;
-  return osbJ2ForceDerivative(fam, params_, y, dy, f, dforce);
+  return osbJ2ForceDerivative(fam, params_, y, dy, tangentFields(fam, state, shearCorrection_, own), dforce);
+}
+
+std::unique_ptr<MaterialLinearisation> ElasticPlasticMaterial::makeLinearisation() const {
+  // The elastic tangent (Disable Plasticity) has no per-point work to keep.
+  if (!hasForceDerivative() || disablePlasticity_) return nullptr;
+  return std::make_unique<J2Linearisation>(params_, shearCorrection_);
 }
 
 void ElasticPlasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {

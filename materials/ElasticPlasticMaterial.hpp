@@ -36,6 +36,8 @@ class ElasticPlasticMaterial : public Material {
   bool hasForceDerivative() const override { return alpha_ == 0.0; }
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
+  // The same tangent kept per Newton point (OsbPlasticTangent.hpp J2Tangent: the return per node).
+  std::unique_ptr<MaterialLinearisation> makeLinearisation() const override;
   bool breaksBonds() const override { return true; }  // every kernel drops broken bonds (BondDamage.hpp)
   std::vector<std::string> fieldsRead() const override;  // Temperature_Change with thermal expansion
   double density() const override { return density_; }

@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstring>
 #include <type_traits>
+#include <vector>
 
 #include "core/BondDamage.hpp"
 #include "core/BondFamily.hpp"
@@ -122,7 +123,7 @@ struct FamilyScratch {
   double *d0 = nullptr, *d1 = nullptr, *d2 = nullptr;  // y_j - y_i
   double *len = nullptr;                               // |y_j - y_i|
   double *vj = nullptr;                                // V_j
-  double *a = nullptr;                                 // per-bond work array of the caller
+  double *a = nullptr, *b = nullptr;                   // per-bond work arrays of the caller
   double *g0 = nullptr, *g1 = nullptr, *g2 = nullptr;  // force on the far end, before the scatter
 };
 
@@ -144,6 +145,11 @@ NodeRecords nodeRecords(const FamilyView& fam, const double* y, const double* fo
 
 // Writes the force records back to force (3 per node).
 void storeForces(const FamilyView& fam, const NodeRecords& rec, double* force);
+
+// Position records (y_j, V_j) of the fam.numNodes overlap nodes in buf (grown, never shrunk; aligned as
+// nodeRecords' own): for a caller that keeps positions while nodeRecords holds another vector (the J2 tangent's
+// products: positions y and the direction dy).
+const Quad* positionRecords(const FamilyView& fam, const double* y, std::vector<double>& buf);
 
 // Thread-local scratch for families of up to the largest family of [fam.begin, fam.end); grown, never
 // shrunk (one allocation per thread and size, not per call).
@@ -307,6 +313,26 @@ PF_INLINE int gatherFamily(const FamilyView& fam, const Quad* __restrict pos, in
   return n;
 }
 
+// dv_j - dv_i of node i's family into e0, e1, e2 from records (dv_j, .) of any per-node vector (a direction dy);
+// padded to whole chunks with 0. The same record loads and transposes as gatherFamily, without lengths or damage.
+PF_INLINE void gatherDifferences(const FamilyView& fam, const Quad* __restrict pos, int i, double* __restrict e0,
+                                 double* __restrict e1, double* __restrict e2) {
+  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
+  const int* __restrict nb = fam.neighbors + b0;
+  const Quad vi = pos[i];
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    Quad r0 = pos[nb[k]] - vi, r1 = pos[nb[k + 1]] - vi, r2 = pos[nb[k + 2]] - vi, r3 = pos[nb[k + 3]] - vi;
+    transpose4(r0, r1, r2, r3);
+    storeQuad(e0 + k, r0); storeQuad(e1 + k, r1); storeQuad(e2 + k, r2);
+  }
+  for (; k < n; ++k) {
+    const Quad r = pos[nb[k]] - vi;
+    e0[k] = r[0]; e1[k] = r[1]; e2[k] = r[2];
+  }
+  for (int b = n; b < roundUpToLanes(n); ++b) e0[b] = e1[b] = e2[b] = 0.0;
+}
+
 // omega_k v for the chunk at bond k; Unit (FamilyView::unitInfluence): omega = 1, v itself, without
 // reading the array (1 * v == v exactly, so both give the same bits).
 template <bool Unit, class Chunk>
@@ -347,6 +373,31 @@ PF_INLINE double dilatationSum(const double* __restrict w, const double* __restr
   return laneSum(acc);
 }
 
+// The scatter of addBondForces: f_j += (g0, g1, g2)_k, times the bond's fraction, for node i's bonds k, then f_i +=
+// own. Four bonds at a time, transposed back into records: one read-modify-write per neighbour. Partial volumes:
+// the reaction on j carries the same share of the bond as f_i (V_j fr).
+PF_INLINE void scatterReactions(const FamilyView& fam, int i, const double* __restrict g0, const double* __restrict g1,
+                                const double* __restrict g2, const Quad& own, Quad* __restrict force) {
+  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
+  const int* __restrict nb = fam.neighbors + b0;
+  const double* __restrict fr = fam.fraction ? fam.fraction + b0 : nullptr;
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    Quad q0 = loadQuad(g0 + k), q1 = loadQuad(g1 + k), q2 = loadQuad(g2 + k), q3 = {};
+    if (fr) {
+      const Quad f = loadQuad(fr + k);
+      q0 *= f; q1 *= f; q2 *= f;
+    }
+    transpose4(q0, q1, q2, q3);
+    force[nb[k]] += q0; force[nb[k + 1]] += q1; force[nb[k + 2]] += q2; force[nb[k + 3]] += q3;
+  }
+  for (; k < n; ++k) {
+    const double f = fr ? fr[k] : 1.0;  // g * 1 == g exactly
+    force[nb[k]] += Quad{g0[k] * f, g1[k] * f, g2[k] * f, 0.0};
+  }
+  force[i] += own;
+}
+
 // f_i += t V_j along each bond, f_j -= t V_i, with forceOverLength(k, chunk) giving s = t / len (the
 // scalar force state over the deformed length) for the chunk at bond k; inBlock as for forEachChunk.
 // The arithmetic runs on vectors into the scratch; the scatter to the neighbours is one record
@@ -354,8 +405,7 @@ PF_INLINE double dilatationSum(const double* __restrict w, const double* __restr
 template <class ForceOverLength>
 PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& sc, bool inBlock,
                              ForceOverLength&& forceOverLength, Quad* __restrict force) {
-  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-  const int* __restrict nb = fam.neighbors + b0;
+  const int n = fam.offsets[i + 1] - fam.offsets[i];
   // The reaction -t V_i is stored negated and added (x - y == x + (-y) exactly): an addition can take
   // the record from memory, a subtraction from it cannot.
   const double mVi = -fam.volume[i];
@@ -376,24 +426,7 @@ PF_INLINE void addBondForces(const FamilyView& fam, int i, const FamilyScratch& 
     a0 += t0 * vj; a1 += t1 * vj; a2 += t2 * vj;
     FullChunk{}.store(g0 + k, t0 * mVi); FullChunk{}.store(g1 + k, t1 * mVi); FullChunk{}.store(g2 + k, t2 * mVi);
   });
-  // Four bonds at a time, transposed back into records: one read-modify-write per neighbour. Partial
-  // volumes: the reaction on j carries the same share of the bond as f_i (V_j fr).
-  const double* __restrict fr = fam.fraction ? fam.fraction + b0 : nullptr;
-  int k = 0;
-  for (; k + 4 <= n; k += 4) {
-    Quad q0 = loadQuad(g0 + k), q1 = loadQuad(g1 + k), q2 = loadQuad(g2 + k), q3 = {};
-    if (fr) {
-      const Quad f = loadQuad(fr + k);
-      q0 *= f; q1 *= f; q2 *= f;
-    }
-    transpose4(q0, q1, q2, q3);
-    force[nb[k]] += q0; force[nb[k + 1]] += q1; force[nb[k + 2]] += q2; force[nb[k + 3]] += q3;
-  }
-  for (; k < n; ++k) {
-    const double f = fr ? fr[k] : 1.0;  // g * 1 == g exactly
-    force[nb[k]] += Quad{g0[k] * f, g1[k] * f, g2[k] * f, 0.0};
-  }
-  force[i] += Quad{laneSum(a0), laneSum(a1), laneSum(a2), 0.0};
+  scatterReactions(fam, i, g0, g1, g2, Quad{laneSum(a0), laneSum(a1), laneSum(a2), 0.0}, force);
 }
 
 }  // namespace osb

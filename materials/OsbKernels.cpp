@@ -13,7 +13,7 @@ namespace pf {
 namespace osb {
 
 FamilyScratch& familyScratch(const FamilyView& fam) {
-  constexpr std::size_t kArrays = 9;
+  constexpr std::size_t kArrays = 10;
   thread_local std::vector<double> buf;
   thread_local FamilyScratch s;
   int nmax = 0;
@@ -24,7 +24,7 @@ FamilyScratch& familyScratch(const FamilyView& fam) {
     buf.assign(kArrays * n + 8, 0.0);
     double* p = buf.data();
     while (reinterpret_cast<std::uintptr_t>(p) % 64 != 0) ++p;
-    double** arrays[kArrays] = {&s.d0, &s.d1, &s.d2, &s.len, &s.vj, &s.a, &s.g0, &s.g1, &s.g2};
+    double** arrays[kArrays] = {&s.d0, &s.d1, &s.d2, &s.len, &s.vj, &s.a, &s.b, &s.g0, &s.g1, &s.g2};
     for (std::size_t k = 0; k < kArrays; ++k) *arrays[k] = p + k * n;
   }
   return s;
@@ -41,16 +41,21 @@ Quad* recordBuffer(std::vector<double>& buf, std::size_t n) {
 }
 }  // namespace
 
-NodeRecords nodeRecords(const FamilyView& fam, const double* y, const double* force) {
-  thread_local std::vector<double> posBuf, forceBuf;
+const Quad* positionRecords(const FamilyView& fam, const double* y, std::vector<double>& buf) {
   // Every family and owned node must lie inside the records (a view not made by makeView may lack it).
-  if (fam.numNodes < fam.end) throw std::logic_error("nodeRecords: FamilyView::numNodes is not set");
+  if (fam.numNodes < fam.end) throw std::logic_error("node records: FamilyView::numNodes is not set");
   const std::size_t n = static_cast<std::size_t>(fam.numNodes);
-  Quad* pos = recordBuffer(posBuf, n);
+  Quad* pos = recordBuffer(buf, n);
   const double* V = fam.volume;
   for (std::size_t j = 0; j < n; ++j) pos[j] = Quad{y[3 * j], y[3 * j + 1], y[3 * j + 2], V[j]};
+  return pos;
+}
+
+NodeRecords nodeRecords(const FamilyView& fam, const double* y, const double* force) {
+  thread_local std::vector<double> posBuf, forceBuf;
   NodeRecords r;
-  r.pos = pos;
+  r.pos = positionRecords(fam, y, posBuf);
+  const std::size_t n = static_cast<std::size_t>(fam.numNodes);
   if (force) {
     Quad* frc = recordBuffer(forceBuf, n);
     for (std::size_t j = 0; j < n; ++j) frc[j] = Quad{force[3 * j], force[3 * j + 1], force[3 * j + 2], 0.0};

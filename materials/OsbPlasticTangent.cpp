@@ -1,6 +1,7 @@
 #include "OsbPlasticTangent.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "J2ReturnMapping.hpp"
 #include "OsbBondLoops.hpp"
@@ -59,103 +60,217 @@ ReturnDerivative returnDerivative(const OsbTrialMoments& t, double dS2, double d
   return d;
 }
 
-// Node i: gathered family in scr (len, bond vectors, V_j), t^d_tr in scr.a; uses g0..g2 as work arrays.
-// Elastic nodes (most of a body) take only the first and the last bond pass.
-// PF_INLINE here and below: inlined into osbJ2ForceDerivative's target clones (avx512f, avx2), as the force
-// kernel is. Left out of line, these were compiled for the baseline ISA only, and the 8-lane trial loops spilled
-// to the stack: 4x the force kernel's time per call (BENCHMARKS.md "Consistent tangent").
-template <bool Unit>
-PF_INLINE bool j2NodeDerivative(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const double* dy,
-                      const J2Fields& s, int i, const osb::FamilyScratch& scr, double* dforce) {
+// Node i's state at y from its gathered family in scr (len, bond vectors, V_j; t^d_tr in scr.a from tr): its
+// return and the dilatation of its force (for plane stress and 3D the plastic extension's, J2Flow::beta; plane strain
+// keeps the trial dilatation, as the force does). False where the return mapping fails.
+// PF_INLINE here and below: inlined into the kernels' target clones (avx512f, avx2), as the force kernel is. Left
+// out of line, these were compiled for the baseline ISA only, and the 8-lane trial loops spilled to the stack: 4x
+// the force kernel's time per call (BENCHMARKS.md "Consistent tangent").
+PF_INLINE bool j2NodeLinearise(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const J2Fields& s,
+                               int i, const osb::FamilyScratch& scr, const J2NodeTrial& tr, J2NodeTangent& nt) {
   const OsbConstants& c = p.osb;
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-  const int* nbr = fam.neighbors + b0;
+  const OsbJ2NodeState committed{s.lambdaN[i], s.alphaN[i], s.qN[i], s.signN[i]};
+  nt.r = osbJ2ReturnMapping(tr.moments, committed, tr.k);
+  if (nt.r.status != OsbJ2Status::Ok) return false;
+  nt.theta = tr.thetaTr;
+  const OsbJ2Return& r = nt.r;
+  if (!(r.dlambda > 0.0) || !flow.beta) return true;
+  // e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58)
   const double *xr = fam.refLength + b0, *w = fam.influence + b0, *epN = s.edpN + b0;
   const double *len = scr.len, *vj = scr.vj, *td = scr.a;
-  double *de = scr.g0, *il = scr.g1, *dep = scr.g2;
-  const double m = fam.weightedVolume[i], invm = 1.0 / m, kD = c.k * c.D;
-  const J2NodeTrial tr = j2NodeTrial<Unit>(fam, p, flow, s.scf, epN, i, scr, scr.a);
-  const OsbJ2NodeState committed{s.lambdaN[i], s.alphaN[i], s.qN[i], s.signN[i]};
-  const OsbJ2Return r = osbJ2ReturnMapping(tr.moments, committed, tr.k);
-  if (r.status != OsbJ2Status::Ok) return false;
-  const bool plastic = r.dlambda > 0.0;
-  const double bm = tr.k.bm, cc = c.c;
-  // Trial part: de = M . (dy_j - dy_i), d theta_tr (Eqs. 4/16 with e^dp_n fixed); with dt^d_tr = omega bm (de -
-  // c d theta_tr x) (Eqs. 40-41) the moments dP1 = 2 sum t^d dt^d V and d(t^d . x) follow from four sums of this pass.
-  double dsum = 0.0, tdDe = 0.0, tdX = 0.0, wXX = 0.0;
+  const double a1 = r.dlambda * r.G1, a2 = r.dlambda * flow.phi * r.G2 * r.pp;
+  double sum = 0.0;
   for (int k = 0; k < n; ++k) {
-    const double* a = dy + 3 * nbr[k];
-    const double* b = dy + 3 * i;
-    il[k] = 1.0 / len[k];
-    de[k] = (scr.d0[k] * (a[0] - b[0]) + scr.d1[k] * (a[1] - b[1]) + scr.d2[k] * (a[2] - b[2])) * il[k];
-    const double wv = w[k] * vj[k];
-    dsum += wv * xr[k] * de[k];
+    const double ep = epN[k] + a1 * (td[k] - r.pp * xr[k]) + a2 * xr[k];
+    sum += w[k] * xr[k] * ((len[k] - xr[k]) - ep) * vj[k];
+  }
+  nt.theta = c.k * c.D * sum / fam.weightedVolume[i];
+  return true;
+}
+
+// Node i's bond streams at one product: the family's (fam), the committed plastic extension, the gather at y in
+// the scratch (bond vectors, lengths, V_j; t^d_tr in a) and the product's work arrays (de in b; dy_j - dy_i in
+// g0..g2, then the reactions).
+struct ProductStreams {
+  const double *__restrict xr, *__restrict w, *__restrict epN;
+  const double *__restrict d0, *__restrict d1, *__restrict d2, *__restrict len, *__restrict vj, *__restrict td;
+  double *__restrict de, *__restrict e0, *__restrict e1, *__restrict e2;
+};
+
+// The direction's part of a node's derivative: d theta_tr and the plastic extension's coefficients,
+// e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58) with its derivative da1, da2, dpp (d.*), and d theta.
+struct NodeDirection {
+  double dthetaTr = 0.0, dtheta = 0.0, a1 = 0.0, a2 = 0.0, da1 = 0.0, da2 = 0.0;
+  ReturnDerivative d{0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+};
+
+// d e^dp along the direction for the chunk at bond k (plastic nodes).
+template <bool Unit, class Chunk>
+PF_INLINE osb::Lanes plasticDerivative(const ProductStreams& b, const NodeDirection& nd, double bm, double cc, int k,
+                                       const Chunk& ch, const osb::Lanes& dek) {
+  const osb::Lanes x = ch.load(b.xr + k);
+  const osb::Lanes dtd = osb::weighted<Unit>(ch, b.w, k, dek - cc * nd.dthetaTr * x) * bm;
+  return nd.da1 * (ch.load(b.td + k) - nd.d.pp * x) + nd.a1 * (dtd - nd.d.dpp * x) + nd.da2 * x;
+}
+
+// First pass: de = M . (dy_j - dy_i) (stored), d theta_tr (Eqs. 4/16 with e^dp_n fixed); with dt^d_tr = omega bm (de -
+// c d theta_tr x) (Eqs. 40-41) the moments dP1 = 2 sum t^d dt^d V and d(t^d . x) follow from sums of this pass, and
+// from them the return's derivative. Then, for plane stress and 3D, d theta of the plastic extension (J2Flow::beta).
+// Padded lanes: y_j - y_i = 0, len 1 (the fill of a block's last family too), V_j 0: they add nothing.
+template <bool Unit>
+PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, int i,
+                                        const ProductStreams& b, const J2NodeTrial& tr, const OsbJ2Return& r) {
+  using osb::Lanes;
+  const int n = fam.offsets[i + 1] - fam.offsets[i];
+  const bool inBlock = osb::chunksStayInBlock(fam, i), plastic = r.dlambda > 0.0;
+  const double invm = 1.0 / fam.weightedVolume[i], kD = p.osb.k * p.osb.D, bm = tr.k.bm, cc = p.osb.c;
+  Lanes S = {}, TdDe = {}, TdX = {}, WXX = {};
+  osb::forEachChunk(n, inBlock, [&](int k, auto ch) {
+    const Lanes x = ch.load(b.xr + k), v = ch.load(b.vj + k);
+    const Lanes dek = (ch.load(b.d0 + k) * ch.load(b.e0 + k) + ch.load(b.d1 + k) * ch.load(b.e1 + k) +
+                       ch.load(b.d2 + k) * ch.load(b.e2 + k)) / ch.load(b.len + k, 1.0);
+    osb::FullChunk{}.store(b.de + k, dek);
+    const Lanes wv = osb::weighted<Unit>(ch, b.w, k, v);
+    S += wv * x * dek;
     if (plastic) {
-      tdDe += td[k] * wv * de[k];
-      tdX += td[k] * wv * xr[k];
-      wXX += wv * xr[k] * xr[k];
+      const Lanes t = ch.load(b.td + k);
+      TdDe += t * wv * dek;
+      TdX += t * wv * x;
+      WXX += wv * x * x;
     }
+  });
+  NodeDirection nd;
+  const double dsum = osb::laneSum(S);
+  nd.dthetaTr = nd.dtheta = kD * dsum * invm;
+  nd.d.pp = r.pp;
+  if (!plastic) return nd;
+  const double dS2 = 2.0 * bm * (osb::laneSum(TdDe) - cc * nd.dthetaTr * osb::laneSum(TdX));
+  const double dSx = bm * (dsum - cc * nd.dthetaTr * osb::laneSum(WXX));
+  const ReturnDerivative& d = nd.d = returnDerivative(tr.moments, dS2, dSx, r, tr.k);  // Eqs. 47, 50
+  nd.a1 = d.dlam * d.G1;
+  nd.a2 = d.dlam * flow.phi * d.G2 * d.pp;
+  nd.da1 = d.ddlam * d.G1 + d.dlam * d.dG1;
+  nd.da2 = flow.phi * (d.ddlam * d.G2 * d.pp + d.dlam * d.dG2 * d.pp + d.dlam * d.G2 * d.dpp);
+  if (flow.beta) {
+    Lanes P = {};
+    osb::forEachChunk(n, inBlock, [&](int k, auto ch) {
+      const Lanes x = ch.load(b.xr + k), dek = osb::FullChunk{}.load(b.de + k);
+      P += osb::weighted<Unit>(ch, b.w, k, x) * (dek - plasticDerivative<Unit>(b, nd, bm, cc, k, ch, dek)) *
+           ch.load(b.vj + k);
+    });
+    nd.dtheta = kD * osb::laneSum(P) * invm;
   }
-  const double dthetaTr = kD * dsum * invm;
-  double theta = tr.thetaTr, dtheta = dthetaTr;
-  ReturnDerivative d{0.0, 1.0, 1.0, r.pp, 0.0, 0.0, 0.0, 0.0};
-  double a1 = 0.0, a2 = 0.0;
-  if (plastic) {
-    const double dS2 = 2.0 * bm * (tdDe - cc * dthetaTr * tdX), dSx = bm * (dsum - cc * dthetaTr * wXX);
-    // Return mapping (Eqs. 47, 50); plastic extension e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58).
-    d = returnDerivative(tr.moments, dS2, dSx, r, tr.k);
-    a1 = d.dlam * d.G1;
-    a2 = d.dlam * flow.phi * d.G2 * d.pp;
-    const double da1 = d.ddlam * d.G1 + d.dlam * d.dG1;
-    const double da2 = flow.phi * (d.ddlam * d.G2 * d.pp + d.dlam * d.dG2 * d.pp + d.dlam * d.G2 * d.dpp);
-    double sum = 0.0, dsumP = 0.0;
-    for (int k = 0; k < n; ++k) {
-      const double dtd = w[k] * bm * (de[k] - cc * dthetaTr * xr[k]);
-      const double ep = epN[k] + a1 * (td[k] - d.pp * xr[k]) + a2 * xr[k];
-      dep[k] = da1 * (td[k] - d.pp * xr[k]) + a1 * (dtd - d.dpp * xr[k]) + da2 * xr[k];
-      sum += w[k] * xr[k] * ((len[k] - xr[k]) - ep) * vj[k];
-      dsumP += w[k] * xr[k] * (de[k] - dep[k]) * vj[k];
-    }
-    // Plane strain keeps the trial (total-extension) dilatation (J2Flow::beta), as the force does.
-    if (flow.beta) {
-      theta = kD * sum * invm;
-      dtheta = kD * dsumP * invm;
-    }
-  }
+  return nd;
+}
+
+// Adds node i's part of dF along the direction whose records are dpos, with node i's family gathered in scr at y
+// and its state nt: the direction pass, then the bond forces' derivative, scattered through the records as the force
+// kernel's (addBondForces).
+template <bool Unit>
+PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const J2Fields& s, int i,
+                             const osb::FamilyScratch& scr, const J2NodeTrial& tr, const J2NodeTangent& nt,
+                             const osb::Quad* dpos, osb::Quad* dforce) {
+  using osb::Lanes;
+  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
+  const ProductStreams b{fam.refLength + b0, fam.influence + b0, s.edpN + b0, scr.d0, scr.d1, scr.d2, scr.len,
+                         scr.vj, scr.a, scr.b, scr.g0, scr.g1, scr.g2};
+  osb::gatherDifferences(fam, dpos, i, b.e0, b.e1, b.e2);
+  // A broken bond carries no force and so no derivative: its y_j - y_i is 0 (gatherFamily), its dy_j - dy_i too.
+  if (fam.brokenN)
+    for (int k = 0; k < n; ++k)
+      if (fam.broken[b0 + k] != 0.0) b.e0[k] = b.e1[k] = b.e2[k] = 0.0;
+  const NodeDirection nd = j2NodeDirection<Unit>(fam, p, flow, i, b, tr, nt.r);
   // Force t = omega (iso theta x + dev (e - e^dp)) along M = Y/|Y| (Eqs. 7-13): d(t M) = dt M + t (I - M M^T) dY/|Y|
-  // = (dt - t de/|Y|) Y/|Y| + (t/|Y|) dY.
-  const double iso = (c.A - tr.B * cc) * invm, dev = tr.B * invm;
-  const double* V = fam.volume;
-  for (int k = 0; k < n; ++k) {
-    if (fam.brokenN && fam.broken[b0 + k] != 0.0) continue;  // no force, no derivative (gatherFamily)
-    const int j = nbr[k];
-    const double ep = plastic ? epN[k] + a1 * (td[k] - d.pp * xr[k]) + a2 * xr[k] : epN[k];
-    const double dp = plastic ? dep[k] : 0.0;
-    const double t = w[k] * (iso * theta * xr[k] + dev * ((len[k] - xr[k]) - ep));
-    const double dt = w[k] * (iso * dtheta * xr[k] + dev * (de[k] - dp));
-    const double along = (dt - t * de[k] * il[k]) * il[k], across = t * il[k];
-    const double Vi = fam.fraction ? V[i] * fam.fraction[b0 + k] : V[i];  // as addBondForces
-    const double Y[3] = {scr.d0[k], scr.d1[k], scr.d2[k]};
-    for (int e = 0; e < 3; ++e) {
-      const double dT = along * Y[e] + across * (dy[3 * j + e] - dy[3 * i + e]);
-      dforce[3 * i + e] += dT * vj[k];
-      dforce[3 * j + e] -= dT * Vi;
+  // = (dt - t de/|Y|) Y/|Y| + (t/|Y|) dY. The reaction -dT V_i is stored negated (addBondForces).
+  const bool plastic = nt.r.dlambda > 0.0;
+  const double invm = 1.0 / fam.weightedVolume[i], cc = p.osb.c, bm = tr.k.bm;
+  const double iso = (p.osb.A - tr.B * cc) * invm, dev = tr.B * invm, theta = nt.theta, mVi = -fam.volume[i];
+  Lanes A0 = {}, A1 = {}, A2 = {};
+  osb::forEachChunk(n, osb::chunksStayInBlock(fam, i), [&](int k, auto ch) {
+    const Lanes x = ch.load(b.xr + k), v = ch.load(b.vj + k), dek = osb::FullChunk{}.load(b.de + k);
+    const Lanes l = ch.load(b.len + k, 1.0), il = 1.0 / l;
+    Lanes ep = ch.load(b.epN + k), dep = {};
+    if (plastic) {
+      ep += nd.a1 * (ch.load(b.td + k) - nd.d.pp * x) + nd.a2 * x;
+      dep = plasticDerivative<Unit>(b, nd, bm, cc, k, ch, dek);
     }
+    const Lanes t = osb::weighted<Unit>(ch, b.w, k, iso * theta * x + dev * ((l - x) - ep));
+    const Lanes dt = osb::weighted<Unit>(ch, b.w, k, iso * nd.dtheta * x + dev * (dek - dep));
+    const Lanes along = (dt - t * dek * il) * il, across = t * il;
+    const Lanes T0 = along * ch.load(b.d0 + k) + across * ch.load(b.e0 + k);
+    const Lanes T1 = along * ch.load(b.d1 + k) + across * ch.load(b.e1 + k);
+    const Lanes T2 = along * ch.load(b.d2 + k) + across * ch.load(b.e2 + k);
+    A0 += T0 * v; A1 += T1 * v; A2 += T2 * v;
+    osb::FullChunk{}.store(b.e0 + k, T0 * mVi); osb::FullChunk{}.store(b.e1 + k, T1 * mVi);
+    osb::FullChunk{}.store(b.e2 + k, T2 * mVi);
+  });
+  osb::scatterReactions(fam, i, b.e0, b.e1, b.e2, osb::Quad{osb::laneSum(A0), osb::laneSum(A1), osb::laneSum(A2), 0.0},
+                        dforce);
+}
+
+// Node i's family at y (pos) gathered into scr and its trial state.
+template <bool Unit>
+PF_INLINE J2NodeTrial j2NodeAt(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const J2Fields& s,
+                               const osb::Quad* pos, int i, osb::FamilyScratch& scr) {
+  osb::gatherFamily(fam, pos, i, scr);
+  return j2NodeTrial<Unit>(fam, p, flow, s.scf, s.edpN + fam.offsets[i], i, scr, scr.a);
+}
+
+// The derivative in one go: each node's state at y, then its product.
+template <bool Unit>
+PF_INLINE bool j2Derivative(const FamilyView& fam, const J2Parameters& p, const double* y, const double* dy,
+                            const J2Fields& s, double* dforce) {
+  const J2Flow flow = j2Flow(p);
+  osb::FamilyScratch& scr = osb::familyScratch(fam);
+  std::vector<double> buf;
+  const osb::Quad* pos = osb::positionRecords(fam, y, buf);
+  const osb::NodeRecords rec = osb::nodeRecords(fam, dy, dforce);
+  J2NodeTangent nt;
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, pos, i, scr);
+    if (!j2NodeLinearise(fam, p, flow, s, i, scr, tr, nt)) return false;
+    j2NodeProduct<Unit>(fam, p, flow, s, i, scr, tr, nt, rec.pos, rec.force);
+  }
+  osb::storeForces(fam, rec, dforce);
+  return true;
+}
+
+template <bool Unit>
+PF_INLINE bool j2Linearise(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
+                           J2Tangent& tan) {
+  const J2Flow flow = j2Flow(p);
+  osb::FamilyScratch& scr = osb::familyScratch(fam);
+  tan.pos = osb::positionRecords(fam, y, tan.records);
+  tan.node.resize(static_cast<std::size_t>(fam.end > fam.begin ? fam.end - fam.begin : 0));
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, tan.pos, i, scr);
+    if (!j2NodeLinearise(fam, p, flow, s, i, scr, tr, tan.node[i - fam.begin])) return false;
   }
   return true;
 }
 
 template <bool Unit>
-PF_INLINE bool j2Derivative(const FamilyView& fam, const J2Parameters& p, const double* y, const double* dy, const J2Fields& s,
-                  double* dforce) {
+PF_INLINE void j2TangentProduct(const FamilyView& fam, const J2Parameters& p, const J2Fields& s, const J2Tangent& tan,
+                                const double* dy, double* dforce) {
   const J2Flow flow = j2Flow(p);
   osb::FamilyScratch& scr = osb::familyScratch(fam);
-  const osb::NodeRecords rec = osb::nodeRecords(fam, y, nullptr);
+  const osb::NodeRecords rec = osb::nodeRecords(fam, dy, dforce);
+  const bool prefetchRecords = osb::prefetchRecordsPays(fam, rec);
   for (int i = fam.begin; i < fam.end; ++i) {
-    osb::gatherFamily(fam, rec.pos, i, scr);
-    if (!j2NodeDerivative<Unit>(fam, p, flow, dy, s, i, scr, dforce)) return false;
+    // As the force kernel (j2Force): the bond streams two nodes ahead, the neighbours' records one ahead (here the
+    // positions y besides the direction's and the force's records).
+    const int ahead = osb::prefetchFamily(fam, i);
+    if (ahead >= 0) osb::prefetchBondRange(fam, ahead, s.edpN, false);
+    if (prefetchRecords) {
+      osb::prefetchNeighbourRecords(fam, rec, i);
+      if (i + 1 < fam.end)
+        for (int b = fam.offsets[i + 1]; b < fam.offsets[i + 2]; ++b) __builtin_prefetch(tan.pos + fam.neighbors[b], 0, 3);
+    }
+    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, tan.pos, i, scr);
+    j2NodeProduct<Unit>(fam, p, flow, s, i, scr, tr, tan.node[i - fam.begin], rec.pos, rec.force);
   }
-  return true;
+  osb::storeForces(fam, rec, dforce);
 }
 
 }  // namespace
@@ -163,6 +278,21 @@ PF_INLINE bool j2Derivative(const FamilyView& fam, const J2Parameters& p, const 
 PF_KERNEL_CLONES bool osbJ2ForceDerivative(const FamilyView& fam, const J2Parameters& p, const double* y,
                                            const double* dy, const J2Fields& s, double* dforce) {
   return fam.unitInfluence ? j2Derivative<true>(fam, p, y, dy, s, dforce) : j2Derivative<false>(fam, p, y, dy, s, dforce);
+}
+
+std::size_t J2Tangent::bytes() const {
+  return node.capacity() * sizeof(J2NodeTangent) + records.capacity() * sizeof(double);
+}
+
+PF_KERNEL_CLONES bool osbJ2Linearise(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
+                                     J2Tangent& tan) {
+  return fam.unitInfluence ? j2Linearise<true>(fam, p, y, s, tan) : j2Linearise<false>(fam, p, y, s, tan);
+}
+
+PF_KERNEL_CLONES void osbJ2TangentProduct(const FamilyView& fam, const J2Parameters& p, const J2Fields& s,
+                                          const J2Tangent& tan, const double* dy, double* dforce) {
+  if (fam.unitInfluence) j2TangentProduct<true>(fam, p, s, tan, dy, dforce);
+  else j2TangentProduct<false>(fam, p, s, tan, dy, dforce);
 }
 
 }  // namespace pf

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "BondFamily.hpp"
+#include "MaterialLinearisation.hpp"
 #include "Dimension.hpp"
 #include "StateStore.hpp"
 
@@ -45,6 +46,9 @@ class Material {
                                double* dforce) const {
     return false;
   }
+  // The same derivative kept at one point (core/MaterialLinearisation.hpp), for a model whose derivative repeats
+  // work that does not depend on dy. Null (the default): the solvers call forceDerivative per product.
+  virtual std::unique_ptr<MaterialLinearisation> makeLinearisation() const { return nullptr; }
 
   // Per bond b of owned nodes [fam.begin, fam.end): c_b such that c_b V_j n n^T approximates the part of
   // dF_i/du_j carried by the bond's own extension (no dilatation coupling): the sparse preconditioner of

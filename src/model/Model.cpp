@@ -297,24 +297,6 @@ std::vector<double> Model::pairStiffness() const {
   return c;
 }
 
-bool Model::hasExactTangent() const {
-  for (const BlockModel& b : blocks_)
-    if (!b.material->hasForceDerivative()) return false;
-  return true;
-}
-
-bool Model::forceDerivative(const double* u, const double* du, double* df) {
-  layout_->importToOverlap(u, uOverlap_.data(), 3);
-  for (std::size_t k = 0; k < yOverlap_.size(); ++k) yOverlap_[k] = x_[k] + uOverlap_[k];
-  duOverlap_.resize(yOverlap_.size());
-  layout_->importToOverlap(du, duOverlap_.data(), 3);
-  std::fill(fOverlap_.begin(), fOverlap_.end(), 0.0);
-  for (const BlockModel& b : blocks_)
-    if (!b.material->forceDerivative(view(b), yOverlap_.data(), duOverlap_.data(), state_, fOverlap_.data())) return false;
-  layout_->exportAdd(fOverlap_.data(), df, 3);
-  return true;
-}
-
 void Model::addPrescribedDisplacement(NodalLoad load, bool atInitialTime) {
   for (int i : load.nodes) prescribed_[3 * i + load.coordinate] = 1;
   prescribedAtStart_.push_back(atInitialTime ? 1 : 0);

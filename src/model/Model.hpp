@@ -64,8 +64,13 @@ class Model {
   // The same at given current positions y (3 per owned node) instead of x + u: for an integrator whose
   // positions are rounded otherwise (Peridigm's Verlet forms y = (x + u_n) + dt v, not x + u_n+1).
   void internalForceAt(const double* y, double* f);
-  // df = (d f / d u) du at u, exactly, if every material has an exact tangent (returns false otherwise).
-  bool forceDerivative(const double* u, const double* du, double* df);
+  // The exact tangent, if every material has one (hasExactTangent). lineariseAt keeps each block's tangent at
+  // displacements u (Material::makeLinearisation; a block without one is differentiated at u on each product) and
+  // returns false on every rank if a material cannot linearise at u on any (collective). forceDerivative: df =
+  // (d f / d u) du at the u of the last lineariseAt; false where a material's derivative fails.
+  bool lineariseAt(const double* u);
+  bool forceDerivative(const double* du, double* df);
+  std::size_t linearisationBytes() const;  // what the kept tangents hold on this rank
   bool hasExactTangent() const;
   // commit() also keeps the evaluated positions as FamilyView::yN when a material wants them.
   void commit();
@@ -234,6 +239,8 @@ class Model {
   std::vector<char> admitted_;                  // their admitted plastic set (per owned node)
   FamilyView view(const BlockModel& b);  // the block's family, with its damage arrays if it has a model
   std::vector<double> uOverlap_, yOverlap_, fOverlap_, duOverlap_;
+  std::vector<double> yLinearised_;  // overlap positions of the last lineariseAt
+  std::vector<std::unique_ptr<MaterialLinearisation>> linearisations_;  // per block; null: forceDerivative per product
   std::unique_ptr<SurfaceBand> band_;             // null: no block has the NDO band
   FieldSet fields_;
   std::vector<double> fieldOverlap_;  // fieldRate's ghosted values

@@ -12,12 +12,13 @@ std::string NewtonWork::summary() const {
     return std::string(b);
   };
   const double rest = krylovSeconds - tangentSeconds - preconditionerSeconds;
-  char line[640];
+  char line[768];
   std::snprintf(line, sizeof line,
-                "NOX work: %ld Newton iterations, %ld GMRES iterations; %ld residuals (%s), %ld tangent products (%s), "
-                "%ld preconditioner applications (%s), %ld preconditioner builds (%s), GMRES's own work (%s); "
+                "NOX work: %ld Newton iterations, %ld GMRES iterations; %ld residuals (%s), %ld linearisations (%s, "
+                "%.0f MB kept), %ld tangent products (%s), %ld preconditioner applications (%s), %ld preconditioner builds (%s), GMRES's own work (%s); "
                 "%.2f s in the engine on rank 0",
-                newtonIterations, krylovIterations, residuals, part(residualSeconds).c_str(), tangentProducts,
+                newtonIterations, krylovIterations, residuals, part(residualSeconds).c_str(), linearisations,
+                part(linearisationSeconds).c_str(), tangentBytes / 1e6, tangentProducts,
                 part(tangentSeconds).c_str(), preconditionerApplications, part(preconditionerSeconds).c_str(),
                 preconditionerBuilds, part(buildSeconds).c_str(), part(rest > 0 ? rest : 0.0).c_str(), seconds);
   return line;

@@ -11,10 +11,12 @@ struct NewtonWork {
   long newtonIterations = 0, krylovIterations = 0;
   long residuals = 0;                   // evaluations of F(x), the line search's included
   long tangentProducts = 0;             // J dx: the exact derivative, or a difference of two forces
+  long linearisations = 0;              // Newton points the tangent was formed at (Model::lineariseAt; FD: its base force)
+  double tangentBytes = 0;              // the most memory the kept tangent held on rank 0 (Model::linearisationBytes)
   long preconditionerApplications = 0;  // M^-1 r inside GMRES (right preconditioning) and for NLCG
   long preconditionerBuilds = 0;
   double seconds = 0;  // in the engine's solves, the preconditioner's build included
-  double residualSeconds = 0, tangentSeconds = 0, preconditionerSeconds = 0, buildSeconds = 0;
+  double residualSeconds = 0, tangentSeconds = 0, linearisationSeconds = 0, preconditionerSeconds = 0, buildSeconds = 0;
   double krylovSeconds = 0;  // in GMRES, its products and preconditioner applications included
   // "NOX work: N Newton iterations, ..." and the seconds of each part with its share of `seconds`.
   std::string summary() const;

@@ -56,8 +56,14 @@ StepTangent::StepTangent(Model& model, double scale, const Inertia* inertia, boo
 
 bool StepTangent::lineariseAt(const double* x) {
   std::copy(x, x + model_.numDofs(), u_.begin());
-  if (exact_) return true;
-  const WorkTimer timer(work_ ? &work_->tangentSeconds : nullptr);  // the difference's base force
+  const WorkTimer timer(work_ ? &work_->linearisationSeconds : nullptr);
+  if (work_) ++work_->linearisations;
+  if (exact_) {
+    const bool ok = model_.lineariseAt(u_.data());
+    if (work_) work_->tangentBytes = std::max(work_->tangentBytes, static_cast<double>(model_.linearisationBytes()));
+    return ok;
+  }
+  // the difference's base force
   try {
     model_.internalForce(u_.data(), f0_.data());
   } catch (const ConstitutiveFailure&) {
@@ -72,7 +78,7 @@ bool StepTangent::apply(const double* dx, double* y) {
   const std::vector<char>& fixed = model_.prescribedMask();
   const int n = model_.numDofs();
   if (exact_) {
-    if (!model_.forceDerivative(u_.data(), dx, df_.data())) return false;
+    if (!model_.forceDerivative(dx, df_.data())) return false;
   } else {
     double local = 0, vmax = 0;
     for (int k = 0; k < n; ++k) local = std::max(local, std::fabs(dx[k]));

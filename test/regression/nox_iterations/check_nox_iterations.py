@@ -54,11 +54,12 @@ def run(exe, base, tolerance, work):
 
 def check_work_line(stdout, per_step, tolerance):
     linear = sum(int(n) for n in re.findall(r"\(linear\s+(\d+)\)", stdout))
-    m = re.search(r"NOX work: (\d+) Newton iterations, (\d+) GMRES iterations; (\d+) residuals .*?, (\d+) tangent "
-                  r"products .*?, (\d+) preconditioner applications .*?, (\d+) preconditioner builds", stdout)
+    m = re.search(r"NOX work: (\d+) Newton iterations, (\d+) GMRES iterations; (\d+) residuals .*?, (\d+) "
+                  r"linearisations .*?, (\d+) tangent products .*?, (\d+) preconditioner applications .*?, (\d+) "
+                  r"preconditioner builds", stdout)
     if not m:
         sys.exit("tolerance %g: no 'NOX work' line in the output" % tolerance)
-    newton, gmres, residuals, products, applications, builds = (int(g) for g in m.groups())
+    newton, gmres, residuals, linearisations, products, applications, builds = (int(g) for g in m.groups())
     problems = []
     if newton != sum(per_step):
         problems.append("Newton iterations %d, the steps printed %d" % (newton, sum(per_step)))
@@ -69,6 +70,8 @@ def check_work_line(stdout, per_step, tolerance):
     if products < gmres or applications < gmres:
         problems.append("%d products and %d preconditioner applications for %d GMRES iterations"
                         % (products, applications, gmres))
+    if linearisations != newton:  # one tangent per Newton direction: the products between reuse it
+        problems.append("%d linearisations for %d Newton iterations" % (linearisations, newton))
     if residuals < newton + len(per_step):
         problems.append("%d residuals for %d Newton iterations in %d solves" % (residuals, newton, len(per_step)))
     if problems:
