@@ -85,7 +85,7 @@ PF_INLINE bool j2NodeLinearise(const FamilyView& fam, const J2Parameters& p, con
     const double ep = epN[k] + a1 * (td[k] - r.pp * xr[k]) + a2 * xr[k];
     sum += w[k] * xr[k] * ((len[k] - xr[k]) - ep) * vj[k];
   }
-  nt.theta = c.k * c.D * sum / fam.weightedVolume[i];
+  nt.theta = c.k * c.D * sum / fam.weightedVolume[i];  // as the force kernel forms it (OsbJ2Node.hpp)
   return true;
 }
 

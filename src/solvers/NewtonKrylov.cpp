@@ -11,6 +11,7 @@
 #include "LoadStepping.hpp"
 #include "NoxParameters.hpp"
 #include "NoxStepGroup.hpp"
+#include "PairStiffness.hpp"
 #include "Solver.hpp"
 #include "StepEquations.hpp"
 #include "core/InputError.hpp"
@@ -89,7 +90,9 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
   // the Krylov solves.
   const WorkTimer timer(&work_.seconds);
   if (!krylov_)
-    krylov_ = std::make_unique<KrylovSolver>(model, opt_.precBondRadius, inertia ? &inertia->coefficient : nullptr,
+    krylov_ = std::make_unique<KrylovSolver>(model, opt_.precBondRadius > 0.0 ? opt_.precBondRadius
+                                                                              : defaultPreconditionerRadius(model),
+                                             inertia ? &inertia->coefficient : nullptr,
                                              opt_.where, &work_);
   // prescribed values were set by the predictor
   StepResidual residual(model, t, u, krylov_->scale(), inertia, &work_);

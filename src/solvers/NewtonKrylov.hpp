@@ -28,9 +28,10 @@ struct NewtonKrylovOptions {
   bool exactJacobian = true;
   // The preconditioner matrix keeps only each node's bonds up to this many times its shortest bond
   // (the grid spacing), stiffened to keep the second moment (the smooth-mode stiffness). Measured: at
-  // delta/dx = 5 a radius of 3 dx halves the wall time (20 % more Krylov iterations); at delta/dx = 3
-  // it keeps every bond, and cutting further there cost more iterations than it saved.
-  double precBondRadius = 3.0;
+  // delta/dx = 5 a radius of 3 dx halves the wall time (20 % more Krylov iterations); at delta/dx = 3 in 2D
+  // it keeps every bond, and cutting further there cost more iterations than it saved; in 3D 2 dx wins.
+  // 0: by dimension (defaultPreconditionerRadius).
+  double precBondRadius = 0.0;
   ParamTree nox;                     // "Direction", "Line Search", "Printing", ... passed to NOX
   std::string where;                 // the deck's solver list ("input.xml: Solver/NOXQuasiStatic"), for errors
 };

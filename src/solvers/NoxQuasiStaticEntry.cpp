@@ -85,7 +85,8 @@ SolverEntry NoxQuasiStaticSolver::entry() {
   e.parameters.push_back(S::text("Nonlinear Solver", "NOX's (default `Line Search Based`); checked against the names NOX builds, as are "
                                                   "`Direction`/`Method` and `Line Search`/`Method`"));
   e.parameters.push_back(S::real("Preconditioner Bond Radius", "the preconditioner keeps bonds up to this many shortest "
-                                                               "bonds long").byDefault("3").atLeast(1));
+                                                               "bonds long; default 3 when every block is 2D, 2 when "
+                                                               "any is 3D (faster there: docs/benchmark-log.md, 'Preconditioner bond radius')").atLeast(1));
   e.parameters.push_back(S::text("Jacobian", "the Krylov operator: `Exact` = the materials' directional derivative "
                                              "(consistent tangent of the plastic models) where every block's material "
                                              "has one, else a forward difference; `Finite Difference` = always the "

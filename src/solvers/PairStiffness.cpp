@@ -7,6 +7,13 @@
 
 namespace pf {
 
+double defaultPreconditionerRadius(const Model& model) {
+  double threeD = 0.0;
+  for (const BlockModel& b : model.blocks())
+    if (!isPlanar(b.material->dimension())) threeD = 1.0;
+  return model.max(threeD) > 0.0 ? 2.0 : 3.0;
+}
+
 namespace {
 
 // Which bonds the matrix keeps, and one global stiffening factor (boost) so that the kept bonds carry the

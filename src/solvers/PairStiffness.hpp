@@ -12,6 +12,12 @@ namespace pf {
 
 class Model;
 
+// The preconditioner's bond radius (in shortest bonds) where the deck gives none. Collective. 3 (every bond of a
+// delta = 3 dx family) when every block is 2D, 2 when any is 3D: there the sparser matrix cost more GMRES iterations
+// but so much less per application that the run took less time (beam 2.4x, notched bar's first 12 steps 1.7x
+// faster), while in 2D it took longer (the coarse plate +23 %): docs/benchmark-log.md, "Preconditioner bond radius".
+double defaultPreconditionerRadius(const Model& model);
+
 // Collective (two reductions). shift: 3 per owned node, or null. Streams the rows, so that no copy of the
 // matrix is held beside the one the caller builds: sized(rows, counts) once with every owned row's global
 // dof id (owned order) and entry count, then row(r, columns, values, n) for every owned row in that order
