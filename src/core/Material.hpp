@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "BondFamily.hpp"
-#include "MaterialLinearisation.hpp"
 #include "Dimension.hpp"
+#include "MaterialLinearisation.hpp"
 #include "StateStore.hpp"
 
 namespace pf {
