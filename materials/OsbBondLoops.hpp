@@ -189,12 +189,14 @@ PF_INLINE int prefetchFamily(const FamilyView& fam, int i) {
 // faster on the 40^3 cube and 2-13 % faster on the 80^3 one (4 and 32 MB of records; the host's noise is
 // that wide), the elastic one 5 % at 80^3, but the J2 kernel ran 13 % slower on a 16^3 cube (256 kB of
 // records, already in L2), where the prefetch only adds three instructions per bond (BENCHMARKS.md,
-// session 6). Hence the size test; 1 MiB is the L2 of the AMD EPYC measured there.
+// session 6). Hence the size test; 1 MiB is the L2 of the AMD EPYC measured there. positions: a third record array
+// read at the same neighbours (the J2 tangent's positions y, beside the direction's records in rec).
 constexpr std::size_t kRecordPrefetchBytes = std::size_t(1) << 20;
 PF_INLINE bool prefetchRecordsPays(const FamilyView& fam, const NodeRecords& rec) {
   return rec.force && 2 * sizeof(Quad) * static_cast<std::size_t>(fam.numNodes) > kRecordPrefetchBytes;
 }
-PF_INLINE void prefetchNeighbourRecords(const FamilyView& fam, const NodeRecords& rec, int i) {
+PF_INLINE void prefetchNeighbourRecords(const FamilyView& fam, const NodeRecords& rec, int i,
+                                        const Quad* positions = nullptr) {
   const int next = i + 1;
   if (next >= fam.end) return;
   const int* __restrict nb = fam.neighbors;
@@ -202,6 +204,7 @@ PF_INLINE void prefetchNeighbourRecords(const FamilyView& fam, const NodeRecords
   for (int b = fam.offsets[next]; b < b1; ++b) {
     __builtin_prefetch(rec.pos + nb[b], 0, 3);
     __builtin_prefetch(rec.force + nb[b], 1, 3);
+    if (positions) __builtin_prefetch(positions + nb[b], 0, 3);
   }
 }
 

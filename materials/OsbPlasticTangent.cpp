@@ -217,25 +217,6 @@ PF_INLINE J2NodeTrial j2NodeAt(const FamilyView& fam, const J2Parameters& p, con
   return j2NodeTrial<Unit>(fam, p, flow, s.scf, s.edpN + fam.offsets[i], i, scr, scr.a);
 }
 
-// The derivative in one go: each node's state at y, then its product.
-template <bool Unit>
-PF_INLINE bool j2Derivative(const FamilyView& fam, const J2Parameters& p, const double* y, const double* dy,
-                            const J2Fields& s, double* dforce) {
-  const J2Flow flow = j2Flow(p);
-  osb::FamilyScratch& scr = osb::familyScratch(fam);
-  std::vector<double> buf;
-  const osb::Quad* pos = osb::positionRecords(fam, y, buf);
-  const osb::NodeRecords rec = osb::nodeRecords(fam, dy, dforce);
-  J2NodeTangent nt;
-  for (int i = fam.begin; i < fam.end; ++i) {
-    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, pos, i, scr);
-    if (!j2NodeLinearise(fam, p, flow, s, i, scr, tr, nt)) return false;
-    j2NodeProduct<Unit>(fam, p, flow, s, i, scr, tr, nt, rec.pos, rec.force);
-  }
-  osb::storeForces(fam, rec, dforce);
-  return true;
-}
-
 template <bool Unit>
 PF_INLINE bool j2Linearise(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,
                            J2Tangent& tan) {
@@ -262,11 +243,7 @@ PF_INLINE void j2TangentProduct(const FamilyView& fam, const J2Parameters& p, co
     // positions y besides the direction's and the force's records).
     const int ahead = osb::prefetchFamily(fam, i);
     if (ahead >= 0) osb::prefetchBondRange(fam, ahead, s.edpN, false);
-    if (prefetchRecords) {
-      osb::prefetchNeighbourRecords(fam, rec, i);
-      if (i + 1 < fam.end)
-        for (int b = fam.offsets[i + 1]; b < fam.offsets[i + 2]; ++b) __builtin_prefetch(tan.pos + fam.neighbors[b], 0, 3);
-    }
+    if (prefetchRecords) osb::prefetchNeighbourRecords(fam, rec, i, tan.pos);
     const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, tan.pos, i, scr);
     j2NodeProduct<Unit>(fam, p, flow, s, i, scr, tr, tan.node[i - fam.begin], rec.pos, rec.force);
   }
@@ -274,11 +251,6 @@ PF_INLINE void j2TangentProduct(const FamilyView& fam, const J2Parameters& p, co
 }
 
 }  // namespace
-
-PF_KERNEL_CLONES bool osbJ2ForceDerivative(const FamilyView& fam, const J2Parameters& p, const double* y,
-                                           const double* dy, const J2Fields& s, double* dforce) {
-  return fam.unitInfluence ? j2Derivative<true>(fam, p, y, dy, s, dforce) : j2Derivative<false>(fam, p, y, dy, s, dforce);
-}
 
 std::size_t J2Tangent::bytes() const {
   return node.capacity() * sizeof(J2NodeTangent) + records.capacity() * sizeof(double);
@@ -293,6 +265,15 @@ PF_KERNEL_CLONES void osbJ2TangentProduct(const FamilyView& fam, const J2Paramet
                                           const J2Tangent& tan, const double* dy, double* dforce) {
   if (fam.unitInfluence) j2TangentProduct<true>(fam, p, s, tan, dy, dforce);
   else j2TangentProduct<false>(fam, p, s, tan, dy, dforce);
+}
+
+PF_KERNEL_CLONES bool osbJ2ForceDerivative(const FamilyView& fam, const J2Parameters& p, const double* y,
+                                           const double* dy, const J2Fields& s, double* dforce) {
+  // The kept tangent, formed and applied once: one code path, so the two give the same bits.
+  J2Tangent tan;
+  if (!osbJ2Linearise(fam, p, y, s, tan)) return false;
+  osbJ2TangentProduct(fam, p, s, tan, dy, dforce);
+  return true;
 }
 
 }  // namespace pf
