@@ -91,7 +91,7 @@ std::vector<ParameterSpec> ElasticPlasticMaterial::parameters(bool hardening) {
 
 MaterialEntry ElasticPlasticMaterial::entry() {
   MaterialEntry e{"Elastic Plastic", "OSB J2 elastic-perfectly plastic solid (Mitchell 2011)",
-                  withThermalExpansion(parameters(false)),
+                  withThermalExpansion(parameters(false), true),
                   [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticPlasticMaterial(in, false)); },
                   outputs()};
   e.createOperators = heatTerms;
@@ -117,6 +117,8 @@ std::vector<StateSpec> ElasticPlasticMaterial::states() {
           {"Signed_Von_Mises_Stress", Location::Node, false, true},
           {"Dilatation", Location::Node, false, true},
           {"Return_Mapping_Iterations", Location::Node, false, false},
+          // The plastic work [J per node] (OsbPlasticKernels.hpp J2Fields), heat with a Taylor-Quinney Coefficient.
+          {"Dissipated_Energy", Location::Node, true, true},
           // Not history: set on the first evaluation from the reference family and kept (Peridigm's name).
           {"Surface_Correction_Factor", Location::Node, false, true}};
 }
@@ -146,6 +148,8 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
   f.signedVonMises = state.trial("Signed_Von_Mises_Stress");
   f.theta = state.trial("Dilatation");
   f.iterations = state.trial("Return_Mapping_Iterations");
+  f.dissipatedN = state.committed("Dissipated_Energy");
+  f.dissipated = state.trial("Dissipated_Energy");
   double* scf = state.trial("Surface_Correction_Factor");
   if (fam.begin < fam.end && !(scf[fam.begin] > 0.0)) {  // first evaluation of this block: 0 = not yet set
     if (shearCorrection_) osbShearCorrectionFactor(fam, scf);

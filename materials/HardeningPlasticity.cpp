@@ -16,7 +16,7 @@ MaterialEntry HardeningPlasticity::entry() {
                            "Peridigm's H: yield when |t^d|^2/2 - psi0 - H lambda > 0 (elastic_plastic_hardening.cxx; "
                            "3D); H in psi per unit lambda, not Pa")
                        .nonNegative());
-  params = withThermalExpansion(params);
+  params = withThermalExpansion(params, true);
   MaterialEntry e{"Elastic Plastic Hardening",
                   "OSB J2 plasticity with linear hardening: Peridigm's law (Hardening Modulus) or isotropic and "
                   "kinematic hardening (Pirzadeh et al. 2024)", params,

@@ -28,6 +28,9 @@ struct OsbTrialMoments {
   double S3;  // sum (t^d)^3 V: its sign is the sign of sigma_vm (PD analogue of J3)
   double A3;  // sum |t^d| (t^d)^2 V: the scale S3 is compared with
   double Xx;  // x . x
+  // sum t^d_tr e^dp_n V: the trial state against the committed plastic extension, whose sign is the sign of
+  // sigma_vm under OsbJ2Constants::plasticExtensionSign (0 for a node that has not flowed)
+  double Se = 0.0;
 };
 
 // History of a node: committed (n) on input, updated (n+1) on output.
@@ -35,7 +38,7 @@ struct OsbJ2NodeState {
   double lambda;  // accumulated dlambda
   double alpha;   // equivalent plastic strain (Eq. 57)
   double q;       // scalar back stress (Eq. 56)
-  double sign;    // sign of sigma_vm: +1/-1, 0 = never set (taken as +1)
+  double sign;    // sign of sigma_vm by the third moment: +1/-1, 0 = never set (taken as +1)
 };
 
 struct OsbJ2Constants {
@@ -47,6 +50,12 @@ struct OsbJ2Constants {
   double peridigmH;
   double tolerance;         // on Eq. 50 written as sigma_vm - sigma_bar, relative to sigma_vm,tr
   int maxIterations;        // Newton updates
+  // The sign that orients sigma_vm against q in the return: from the committed plastic extension
+  // (OsbTrialMoments::Se) instead of the third moment S3 (the paper's), so that q is measured along e^dp, the
+  // direction of a Prager back stress. S3 vanishes in pure shear and, in plane strain, in all plastic flow
+  // (sigma_zz -> the mean stress), where the paper's sign is arbitrary (docs/materials.md, "Sign of sigma_vm").
+  // OsbJ2NodeState::sign stays the third-moment sign (the output's Signed_Von_Mises_Stress).
+  bool plasticExtensionSign = false;
 };
 
 enum class OsbJ2Status { Ok, BackStressBeyondYield, NotConverged };

@@ -44,6 +44,10 @@ PF_INLINE double vonMisesSign(const OsbTrialMoments& t, double committedSign) {
   return sgn;
 }
 
+// Sign of sigma_vm along the committed plastic extension (OsbJ2Constants::plasticExtensionSign): + while the
+// trial state points along e^dp_n, - against it; + for a node that has not flowed (its first flow sets e^dp).
+PF_INLINE double plasticExtensionSign(const OsbTrialMoments& t) { return t.Se < 0.0 ? -1.0 : 1.0; }
+
 struct NewtonResult {
   double dlam, G1, G2, vm, deps;
   int iters;
@@ -106,11 +110,13 @@ PF_INLINE OsbJ2Return returnMapping(const OsbTrialMoments& trial, const OsbJ2Nod
                                     const OsbJ2Constants& k) {
   if (k.peridigmLaw) return peridigmReturn(trial, committed, k);
   const TrialSplit tr = splitTrial(trial, k.yield);
-  const double sgn = vonMisesSign(trial, committed.sign);
+  const double thirdMomentSign = vonMisesSign(trial, committed.sign);
+  const double sgn = k.plasticExtensionSign ? plasticExtensionSign(trial) : thirdMomentSign;
   // Direction of plastic flow along the loading axis, sign(sigma_vm - q) of Eqs. 45-46, 56.
   const double dir = sgn * tr.vm - committed.q >= 0.0 ? 1.0 : -1.0;
   // Current yield level, Eqs. 39/46 (not Eq. 32, which drops q after the sign).
-  const double sbarN = k.yieldStress + k.isoHardening * committed.alpha + dir * committed.q;
+  const double sigmaBar = k.yieldStress + k.isoHardening * committed.alpha;
+  const double sbarN = sigmaBar + dir * committed.q;
   OsbJ2Return r{};
   r.pp = tr.pp;
   r.vonMisesTrial = tr.vm;
@@ -119,8 +125,14 @@ PF_INLINE OsbJ2Return returnMapping(const OsbTrialMoments& trial, const OsbJ2Nod
     r.status = OsbJ2Status::BackStressBeyondYield;
     return r;
   }
+  // f = |sgn vm - q| - sigma_bar (Eqs. 45-46) > 0 is vm > sbarN only while sgn = dir. When they differ, the state
+  // went back past the centre q along its own direction (vm < |q|, e.g. a hardened point unloading), and f > 0
+  // would need |q| > sigma_bar + vm, which sbarN > 0 excludes: elastic. Until 2026-12-06 such states were returned
+  // to sbarN as if plastic whenever vm > sigma_bar - |q|: a spurious yield on unloading once |q| > sigma_bar/2,
+  // which stopped the kinematic cylinder's unloading (docs/verification.md).
+  const bool pastCentre = sgn != dir;
   NewtonResult nr{0.0, 1.0, 1.0, tr.vm, 0.0, 0, true};  // elastic: t^d_n+1 = t^d_tr
-  if (tr.vm > sbarN) nr = returnToYieldSurface(tr, sbarN, k);  // f(t^d_tr) > 0, Eqs. 42-43
+  if (!pastCentre && tr.vm > sbarN) nr = returnToYieldSurface(tr, sbarN, k);  // f(t^d_tr) > 0, Eqs. 42-43
   r.iterations = nr.iters;
   if (!nr.converged) {
     r.status = OsbJ2Status::NotConverged;
@@ -129,7 +141,7 @@ PF_INLINE OsbJ2Return returnMapping(const OsbTrialMoments& trial, const OsbJ2Nod
   r.state.lambda = committed.lambda + nr.dlam;
   r.state.alpha = committed.alpha + nr.deps;                    // Eq. 57
   r.state.q = committed.q + dir * k.kinHardening * nr.deps;     // Eq. 56
-  r.state.sign = sgn;
+  r.state.sign = thirdMomentSign;
   r.dlambda = nr.dlam;
   r.G1 = nr.G1;
   r.G2 = nr.G2;
@@ -175,6 +187,31 @@ PF_INLINE double updatePlasticExtension(const double* __restrict w, const double
   return osb::laneSum(acc);
 }
 
+// sum e^dp_n+1 e^dp_n V: negative when the flow carried the plastic extension through zero (against its direction).
+PF_INLINE double alongCommitted(const double* __restrict ep, const double* __restrict epN,
+                                const double* __restrict vj, int n, bool inBlock) {
+  osb::Lanes along = {};
+  osb::forEachChunk(n, inBlock, [&](int k, auto c) { along += c.load(ep + k) * c.load(epN + k) * c.load(vj + k); });
+  return osb::laneSum(along);
+}
+
+// The same for a non-unit influence in 3D and plane strain (J2Flow::flowOverOmega): e^dp_n+1 = e^dp_n + a1 u with
+// u = t^d_tr / omega (trialExtensionFlow), so that omega bm (e - c theta x - e^dp_n+1) = G1 t^d_tr, the returned state.
+template <bool Unit>
+PF_INLINE double updatePlasticExtensionOverOmega(const double* __restrict w, const double* __restrict xr,
+                                                 const double* __restrict len, const double* __restrict epN,
+                                                 const double* __restrict vj, double bm, double cth, double a1, int n,
+                                                 bool inBlock, double* __restrict ep) {
+  osb::Lanes acc = {};
+  osb::forEachChunk(n, inBlock, [&](int k, auto c) {
+    const osb::Lanes x = c.load(xr + k);
+    const osb::Lanes e = c.load(epN + k) + a1 * trialExtensionFlow(c, xr, len, epN, bm, cth, k);
+    c.store(ep + k, e);
+    acc += osb::weighted<Unit>(c, w, k, x) * ((c.load(len + k) - x) - e) * c.load(vj + k);
+  });
+  return osb::laneSum(acc);
+}
+
 // Force from the updated state, written as osbElasticForce writes it (t = t^iso + t^d, Eqs. 7-13
 // with e^d - e^dp), along the deformed bond. B: c.B, times Peridigm's shear correction factor if on -- it
 // scales the whole deviatoric state, its -c theta x part included (elastic_plastic_hardening.cxx).
@@ -195,7 +232,9 @@ PF_INLINE void addJ2BondForces(const FamilyView& fam, const OsbConstants& c, int
 
 OsbJ2NodeState committedState(const J2Fields& s, int i) { return {s.lambdaN[i], s.alphaN[i], s.qN[i], s.signN[i]}; }
 
-void storeNodeState(const J2Fields& s, int i, const OsbJ2Return& r, double theta) {
+// volume: V_i, for the plastic work sigma_vm |d eps_p| V_i (Eqs. 20, 55), the model's sigma : d eps^p on the paths
+// where it equals classical J2 (the flow is along t^d), backward Euler as the return.
+void storeNodeState(const J2Fields& s, int i, const OsbJ2Return& r, double theta, double volume) {
   s.lambda[i] = r.state.lambda;
   s.alpha[i] = r.state.alpha;
   s.q[i] = r.state.q;
@@ -204,6 +243,7 @@ void storeNodeState(const J2Fields& s, int i, const OsbJ2Return& r, double theta
   s.signedVonMises[i] = r.state.sign * r.vonMises;
   s.theta[i] = theta;
   if (s.iterations) s.iterations[i] = r.iterations;
+  if (s.dissipated) s.dissipated[i] = s.dissipatedN[i] + r.vonMises * r.plasticStrain * volume;
 }
 
 // Node i from its gathered family: trial state, return mapping, plastic extension, node state, force.
@@ -227,20 +267,28 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
   const double B = tr.B, thetaTr = tr.thetaTr;
   const OsbTrialMoments& trial = tr.moments;
 
-  const OsbJ2Return r = returnMapping(trial, committedState(s, i), k);  // osbJ2ReturnMapping, inlined
+  OsbJ2Return r = returnMapping(trial, committedState(s, i), k);  // osbJ2ReturnMapping, inlined
   if (r.status != OsbJ2Status::Ok) throwReturnFailure(r, s.qN[i], p.maxIterations, i);
 
   // Plastic extension (Eqs. 52, 58) and the dilatation it implies.
   double theta = thetaTr;
   if (r.dlambda > 0.0) {
     const double a1 = r.dlambda * r.G1, a2 = r.dlambda * flow.phi * r.G2 * r.pp;
-    const double sum = updatePlasticExtension<Unit>(w, xr, len, epN, vj, tdv, a1, a2, r.pp, n, inBlock, ep);
+    const bool overOmega = !Unit && flow.flowOverOmega;
+    const double sum =
+        overOmega ? updatePlasticExtensionOverOmega<Unit>(w, xr, len, epN, vj, k.bm, c.c * thetaTr, a1, n, inBlock, ep)
+                  : updatePlasticExtension<Unit>(w, xr, len, epN, vj, tdv, a1, a2, r.pp, n, inBlock, ep);
     // Plane strain: theta from the total extension, i.e. the trial one (see J2Flow::beta).
     if (flow.beta) theta = c.k * c.D * sum / m;
+    // q is measured along e^dp: when the flow carried e^dp through zero, its direction, and so q's sign, turned. With
+    // Eq. 52's flow (G1 = G2, phi = 1 where this sign is used) sum e^dp_n+1 e^dp_n V = |e^dp_n|^2 + a1 Se, which
+    // can only turn negative when Se < 0, so the sum is formed only then (and for the omega-free flow).
+    if (k.plasticExtensionSign && (trial.Se < 0.0 || overOmega) && alongCommitted(ep, epN, vj, n, inBlock) < 0.0)
+      r.state.q = -r.state.q;
   } else {
     for (int b = 0; b < n; ++b) ep[b] = epN[b];  // every trial value is written: StateStore::commit swaps
   }
-  storeNodeState(s, i, r, theta);
+  storeNodeState(s, i, r, theta, fam.volume[i]);
   addJ2BondForces<Unit>(fam, c, i, scr, inBlock, w, xr, ep, theta, invm, B, force);
 }
 

@@ -19,6 +19,10 @@ struct J2Flow {
   // phi: weight of the x-component (t.x) x/m of the flow direction. 1 = Eq. 52 (3D, plane strain);
   // plane stress needs 2 to follow the 3D J2 flow with sigma_zz = 0 (sigma_zz-free eps_p_zz).
   double phi;
+  // For a non-unit influence function in 3D and plane strain the plastic extension flows along t^d_tr / omega (the
+  // trial deviatoric extension, trialExtensionFlow) instead of t^d_tr (Eq. 52): then the stored state is the returned
+  // one, G t^d_tr, on the yield surface. The same as Eq. 52 where omega = 1; the kernels read it only for omega != 1.
+  bool flowOverOmega;
   OsbJ2Constants ret;
 };
 
@@ -34,16 +38,24 @@ PF_INLINE OsbTrialMoments trialDeviatoricState(const double* __restrict w, const
                                                const double* __restrict len, const double* __restrict epN,
                                                const double* __restrict vj, double bm, double cth, int n,
                                                bool inBlock, double* __restrict tdv) {
-  osb::Lanes S2 = {}, Sx = {}, S3 = {}, A3 = {};
+  osb::Lanes S2 = {}, Sx = {}, S3 = {}, A3 = {}, Se = {};
   osb::forEachChunk(n, inBlock, [&](int k, auto c) {
-    const osb::Lanes x = c.load(xr + k), v = c.load(vj + k);
+    const osb::Lanes x = c.load(xr + k), v = c.load(vj + k), e = c.load(epN + k);
     const osb::Lanes bmv = osb::Lanes{} + bm;
-    const osb::Lanes td = osb::weighted<Unit>(c, w, k, bmv) * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
+    const osb::Lanes td = osb::weighted<Unit>(c, w, k, bmv) * (((c.load(len + k) - x) - cth * x) - e);
     const osb::Lanes tv = td * v;
     osb::FullChunk{}.store(tdv + k, td);  // scratch: padded to whole chunks
-    S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += osb::absLanes(td) * td * tv;
+    S2 += td * tv; Sx += x * tv; S3 += td * td * tv; A3 += osb::absLanes(td) * td * tv; Se += e * tv;
   });
-  return {osb::laneSum(S2), osb::laneSum(Sx), osb::laneSum(S3), osb::laneSum(A3), 0.0};
+  return {osb::laneSum(S2), osb::laneSum(Sx), osb::laneSum(S3), osb::laneSum(A3), 0.0, osb::laneSum(Se)};
+}
+
+// t^d_tr / omega at the chunk of bond k: bm ((|Y| - x) - c theta_tr x - e^dp_n), cth = c theta_tr (J2Flow::flowOverOmega).
+template <class Chunk>
+PF_INLINE osb::Lanes trialExtensionFlow(const Chunk& c, const double* __restrict xr, const double* __restrict len,
+                                        const double* __restrict epN, double bm, double cth, int k) {
+  const osb::Lanes x = c.load(xr + k);
+  return bm * (((c.load(len + k) - x) - cth * x) - c.load(epN + k));
 }
 
 // Node i's trial state from its gathered family (scr) and committed plastic extension epN (the family's

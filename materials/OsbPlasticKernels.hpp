@@ -40,6 +40,8 @@ struct J2Fields {
   const double* signN; double* sign;          // Von_Mises_Sign: +1/-1, 0 = never set (taken as +1)
   double* vonMises; double* signedVonMises; double* theta;
   double* iterations;                         // Newton iterations of the last update (0 if elastic)
+  // Dissipated_Energy [J per node]: the plastic work sigma_vm |d eps_p| V_i accumulated (null: not kept)
+  const double* dissipatedN = nullptr; double* dissipated = nullptr;
   // Per node: Peridigm's shear correction factor s (ShearCorrectionFactor.hpp), or null for s = 1. It
   // scales the deviatoric modulus (15 mu s / m) and the yield value (s^2 psi0), as Peridigm's
   // elastic_plastic_hardening.cxx does.

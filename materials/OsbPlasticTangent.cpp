@@ -80,9 +80,12 @@ PF_INLINE bool j2NodeLinearise(const FamilyView& fam, const J2Parameters& p, con
   const double *xr = fam.refLength + b0, *w = fam.influence + b0, *epN = s.edpN + b0;
   const double *len = scr.len, *vj = scr.vj, *td = scr.a;
   const double a1 = r.dlambda * r.G1, a2 = r.dlambda * flow.phi * r.G2 * r.pp;
+  const bool overOmega = !fam.unitInfluence && flow.flowOverOmega;
+  const double bm = tr.k.bm, cth = c.c * tr.thetaTr;
   double sum = 0.0;
   for (int k = 0; k < n; ++k) {
-    const double ep = epN[k] + a1 * (td[k] - r.pp * xr[k]) + a2 * xr[k];
+    const double ep = overOmega ? epN[k] + a1 * (bm * (((len[k] - xr[k]) - cth * xr[k]) - epN[k]))
+                                : epN[k] + a1 * (td[k] - r.pp * xr[k]) + a2 * xr[k];
     sum += w[k] * xr[k] * ((len[k] - xr[k]) - ep) * vj[k];
   }
   nt.theta = c.k * c.D * sum / fam.weightedVolume[i];  // as the force kernel forms it (OsbJ2Node.hpp)
@@ -100,16 +103,31 @@ struct ProductStreams {
 
 // The direction's part of a node's derivative: d theta_tr and the plastic extension's coefficients,
 // e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58) with its derivative da1, da2, dpp (d.*), and d theta.
+// overOmega: e^dp = e^dp_n + a1 u, u = t^d_tr / omega (J2Flow::flowOverOmega), cth = c theta_tr.
 struct NodeDirection {
-  double dthetaTr = 0.0, dtheta = 0.0, a1 = 0.0, a2 = 0.0, da1 = 0.0, da2 = 0.0;
+  double dthetaTr = 0.0, dtheta = 0.0, a1 = 0.0, a2 = 0.0, da1 = 0.0, da2 = 0.0, cth = 0.0;
+  bool overOmega = false;
   ReturnDerivative d{0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 };
+
+// The plastic extension's increment e^dp - e^dp_n for the chunk at bond k (plastic nodes).
+template <bool Unit, class Chunk>
+PF_INLINE osb::Lanes plasticIncrement(const ProductStreams& b, const NodeDirection& nd, double bm, int k,
+                                      const Chunk& ch) {
+  if (!Unit && nd.overOmega) return nd.a1 * trialExtensionFlow(ch, b.xr, b.len, b.epN, bm, nd.cth, k);
+  const osb::Lanes x = ch.load(b.xr + k);
+  return nd.a1 * (ch.load(b.td + k) - nd.d.pp * x) + nd.a2 * x;
+}
 
 // d e^dp along the direction for the chunk at bond k (plastic nodes).
 template <bool Unit, class Chunk>
 PF_INLINE osb::Lanes plasticDerivative(const ProductStreams& b, const NodeDirection& nd, double bm, double cc, int k,
                                        const Chunk& ch, const osb::Lanes& dek) {
   const osb::Lanes x = ch.load(b.xr + k);
+  if (!Unit && nd.overOmega) {  // d(a1 u), du = bm (de - c d theta_tr x)
+    return nd.da1 * trialExtensionFlow(ch, b.xr, b.len, b.epN, bm, nd.cth, k) +
+           nd.a1 * (bm * (dek - cc * nd.dthetaTr * x));
+  }
   const osb::Lanes dtd = osb::weighted<Unit>(ch, b.w, k, dek - cc * nd.dthetaTr * x) * bm;
   return nd.da1 * (ch.load(b.td + k) - nd.d.pp * x) + nd.a1 * (dtd - nd.d.dpp * x) + nd.da2 * x;
 }
@@ -141,6 +159,8 @@ PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameter
     }
   });
   NodeDirection nd;
+  nd.overOmega = flow.flowOverOmega;
+  nd.cth = cc * tr.thetaTr;
   const double dsum = osb::laneSum(S);
   nd.dthetaTr = nd.dtheta = kD * dsum * invm;
   nd.d.pp = r.pp;
@@ -192,7 +212,7 @@ PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const
     const Lanes l = ch.load(b.len + k, 1.0), il = 1.0 / l;
     Lanes ep = ch.load(b.epN + k), dep = {};
     if (plastic) {
-      ep += nd.a1 * (ch.load(b.td + k) - nd.d.pp * x) + nd.a2 * x;
+      ep += plasticIncrement<Unit>(b, nd, bm, k, ch);
       dep = plasticDerivative<Unit>(b, nd, bm, cc, k, ch, dek);
     }
     const Lanes t = osb::weighted<Unit>(ch, b.w, k, iso * theta * x + dev * ((l - x) - ep));

@@ -55,12 +55,12 @@ bool ignoredShearCorrection(const MaterialInput& in, const std::string& model) {
   return false;
 }
 
-std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params) {
+std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params, bool plasticHeating) {
   params.push_back(ParameterSpec::real("Thermal Expansion Coefficient",
                                        "linear thermal expansion coefficient alpha [1/K]; the material then reads the "
                                        "Temperature field (docs/input.md, \"Temperature\"), relative to each point's "
                                        "start temperature"));
-  for (ParameterSpec& p : heatParameters(false)) params.push_back(std::move(p));
+  for (ParameterSpec& p : heatParameters(plasticHeating)) params.push_back(std::move(p));
   return params;
 }
 

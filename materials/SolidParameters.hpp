@@ -27,8 +27,9 @@ bool shearCorrectionOf(const MaterialInput& in, Dimension dim);
 bool ignoredShearCorrection(const MaterialInput& in, const std::string& model);
 
 // The parameters plus Peridigm's "Thermal Expansion Coefficient" (for a model that honours it) and the conduction
-// parameters "Thermal Conductivity", "Specific Heat Capacity" (materials/HeatConduction.hpp).
-std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params);
+// parameters "Thermal Conductivity", "Specific Heat Capacity" (materials/HeatConduction.hpp); plasticHeating: also
+// "Taylor-Quinney Coefficient" (heatParameters).
+std::vector<ParameterSpec> withThermalExpansion(std::vector<ParameterSpec> params, bool plasticHeating = false);
 // "Thermal Conductivity", "Specific Heat Capacity" and, for a model that integrates its plastic work
 // (Dissipated_Energy), "Taylor-Quinney Coefficient" (materials/PlasticHeating.hpp).
 std::vector<ParameterSpec> heatParameters(bool plasticHeating);

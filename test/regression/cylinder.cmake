@@ -6,7 +6,7 @@
 add_test(NAME cylinder_pressure_np1
          COMMAND ${PY} ${CMAKE_CURRENT_SOURCE_DIR}/regression/cylinder/run_cylinder.py ${PERIFORGE_EXE})
 set_tests_properties(cylinder_pressure_np1 PROPERTIES LABELS "regression" PROCESSORS 1 TIMEOUT 300)
-# Elastic Plastic Hardening (isotropic) loaded past p_L and unloaded, against a 1D radial J2 solution written in
+# Elastic Plastic Hardening (isotropic, then kinematic) loaded past p_L and unloaded, against a 1D radial J2 solution written in
 # the test (radial_j2.py). Bounds and reasons: run_cylinder_hardening.py. At np 2 (np 1 as well until session 26;
 # issue 37: a deck runs at one rank count unless np 1 and 2 test different code).
 add_test(NAME cylinder_hardening_np2

@@ -14,8 +14,12 @@ namespace pftest {
 
 constexpr double kE = 200e9, kNu = 0.3, kSy = 600e6, kDx = 1e-3;
 
-enum class Path { Uniaxial, Cyclic, Shear };
-inline const char* pathName(Path p) { return p == Path::Uniaxial ? "uniaxial" : p == Path::Cyclic ? "cyclic" : "shear"; }
+// CyclicShear: pure shear 0 -> +amp -> -amp -> +amp, where the third moment of t^d vanishes throughout.
+enum class Path { Uniaxial, Cyclic, Shear, CyclicShear };
+inline const char* pathName(Path p) {
+  return p == Path::Uniaxial ? "uniaxial" : p == Path::Cyclic ? "cyclic" : p == Path::Shear ? "shear" : "cyclic shear";
+}
+inline bool isCyclic(Path p) { return p == Path::Cyclic || p == Path::CyclicShear; }
 
 inline const char* dimName(pf::Dimension d) {
   return d == pf::Dimension::ThreeD ? "3D" : d == pf::Dimension::PlaneStress ? "PlaneStress" : "PlaneStrain";
@@ -24,7 +28,7 @@ inline const char* dimName(pf::Dimension d) {
 // Controlling strain at step k of n: uniaxial/shear 0 -> amp; cyclic 0 -> +amp -> -amp -> +amp.
 inline double pathStrain(Path p, int k, int n, double amp) {
   const double t = double(k) / n;
-  if (p != Path::Cyclic) return amp * t;
+  if (!isCyclic(p)) return amp * t;
   if (t <= 0.25) return 4 * t * amp;
   if (t <= 0.75) return amp * (1 - 4 * (t - 0.25));
   return amp * (-1 + 8 * (t - 0.75));
@@ -33,7 +37,7 @@ inline double pathStrain(Path p, int k, int n, double amp) {
 // Small-strain tensor of the path (uniaxial strain along x, or pure shear eps_xy = eps_yx = s/2).
 inline Sym pathTensor(Path p, double s) {
   Sym e{};
-  if (p == Path::Shear) { e[1] = e[3] = 0.5 * s; } else { e[0] = s; }
+  if (p == Path::Shear || p == Path::CyclicShear) { e[1] = e[3] = 0.5 * s; } else { e[0] = s; }
   return e;
 }
 
@@ -61,6 +65,9 @@ struct PathResult {
   int vmErrStep = 0;     // step of the largest von Mises error (against ClassicalJ2)
   int maxIterations = 0;
   int reverseYieldStepPd = -1, reverseYieldStepCl = -1;  // first plastic step after the first reversal
+  // Plastic work per volume at the end of the path: the model's Dissipated_Energy / V, and the classical
+  // sum sigma_n+1 : (eps^p_n+1 - eps^p_n) of ClassicalJ2 (backward Euler, as its return)
+  double plasticWork = 0, plasticWorkCl = 0;
   std::vector<double> strain, vm, svm, alpha, lambda, q;  // per step, peridynamic
 };
 
@@ -87,7 +94,7 @@ template <class Yielded> double firstYield(Yielded yielded, double hi) {
 // path), and of the classical model: an error here is an error of the yield stress as the model sees it,
 // not of the elastic stiffness (which the first path step alone would measure).
 inline double yieldOnsetError(pf::MaterialPoint& mp, pf::Dimension dim, Path path, ClassicalJ2 cl) {
-  const Path dir = path == Path::Shear ? Path::Shear : Path::Uniaxial;
+  const Path dir = path == Path::Shear || path == Path::CyclicShear ? Path::Shear : Path::Uniaxial;
   const double sPd = firstYield([&](double s) {
     mp.deform(pathF(dim, pathTensor(dir, s)));
     mp.evaluate();  // from the committed (virgin) state; never committed
@@ -154,10 +161,12 @@ inline PathResult runPath(pf::Dimension dim, double ratio, Path path, double K, 
     const int comps[3] = {0, 1, 4};
     for (int c : comps) r.stressErr = std::max(r.stressErr, std::fabs(sg[c] - cl.sigma[c]) / kSy);
     r.maxIterations = std::max(r.maxIterations, int(mp.value("Return_Mapping_Iterations")));
-    if (path == Path::Cyclic && k > steps / 4) reversed = true;
+    if (isCyclic(path) && k > steps / 4) reversed = true;
     if (reversed && r.reverseYieldStepPd < 0 && al > alphaPrevPd) r.reverseYieldStepPd = k;
     if (reversed && r.reverseYieldStepCl < 0 && cl.alphaT > alphaPrevCl) r.reverseYieldStepCl = k;
     alphaPrevPd = al; alphaPrevCl = cl.alphaT;
+    for (int a = 0; a < 9; ++a) r.plasticWorkCl += cl.sigma[a] * (cl.epT[a] - cl.ep[a]);
+    r.plasticWork = mp.value("Dissipated_Energy") / mp.nodeVolume();
     r.strain.push_back(s); r.vm.push_back(vm); r.svm.push_back(mp.value("Signed_Von_Mises_Stress"));
     r.alpha.push_back(al); r.lambda.push_back(mp.value("Lambda")); r.q.push_back(mp.value("Back_Stress"));
     mp.commit();

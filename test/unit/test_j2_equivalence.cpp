@@ -243,6 +243,9 @@ TEST(J2Equivalence, PlaneStressConvergence) {
 // against the scalar-back-stress J2 as in MatchesClassicalJ2: against tensor J2 they are 1.95 % / 2.20 %,
 // the model-form gap of that test). Without partial volumes the same ratio gives 1.8 % (3D) and 4.1 %
 // (plane strain) on cyclic paths (RatioTenWithinMeasuredLatticeError).
+// At delta/dx = 6 (Peridigm's default Continuum yield value at a spherical family: 12.0 % in 3D without partial volumes,
+// Discrete 6.8 %) the issue's 3 % (issue 38; measured with partial volumes: 3D 0.26 %, plane strain 0.27 %, plane
+// stress 2.20 %, its cyclic paths with H > 0 against tensor J2 -- the model-form gap above -- and 0.34 % elsewhere).
 // At the paper's delta/dx = 3, 4, 5 (whole volumes: up to 19 %, 3.7 %, see docs/materials.md) the bounds
 // are the largest errors measured over the 12 cases of each ratio and dimension, rounded up by ~25 % (a
 // regression guard, not a physical limit): von Mises / plastic strain / onset in %.
@@ -252,7 +255,9 @@ TEST(J2Equivalence, PartialVolumeFamilies) {
                           {3, Dimension::PlaneStress, 3.1, 1.9},  {4, Dimension::ThreeD, 0.5, 0.35},
                           {4, Dimension::PlaneStrain, 0.8, 0.7},  {4, Dimension::PlaneStress, 2.9, 0.7},
                           {5, Dimension::ThreeD, 0.35, 0.2},     {5, Dimension::PlaneStrain, 0.5, 0.4},
-                          {5, Dimension::PlaneStress, 2.8, 0.4},  {10, Dimension::ThreeD, 1.0, 1.0},
+                          {5, Dimension::PlaneStress, 2.8, 0.4},  {6, Dimension::ThreeD, 3.0, 3.0},
+                          {6, Dimension::PlaneStrain, 3.0, 3.0},  {6, Dimension::PlaneStress, 3.0, 3.0},
+                          {10, Dimension::ThreeD, 1.0, 1.0},
                           {10, Dimension::PlaneStrain, 1.0, 1.0}, {10, Dimension::PlaneStress, 2.0, 2.0}};
   std::printf("\nPartial Volume, Discrete normalisation (%%): max |vm - vm_J2|/sy, max |alpha - alpha_J2|/max "
               "alpha_J2, onset; plane stress also vs scalar-q J2\n");
@@ -276,4 +281,45 @@ TEST(J2Equivalence, PartialVolumeFamilies) {
         EXPECT_LE(r.maxIterations, 10);
       }
   std::fflush(stdout);
+}
+
+// Cyclic pure shear (eps_xy 0 -> +1.2 -> -1.2 -> +1.2 %): the third moment of t^d vanishes along the whole path, so
+// the paper's sign of sigma_vm never turns and a back stress q > 0 cannot show the Bauschinger effect. 3D and
+// plane strain orient q by the committed plastic extension instead (OsbJ2Constants::plasticExtensionSign): von
+// Mises within 1 % of sigma_y of tensor J2 with H > 0 as for the other paths (measured, ratio 15 / 30: kin 0.22 /
+// 0.88 %, mixed 0.24 / 0.98 %; with the third-moment sign 1.92 / 1.90 % and 4.33 / 4.67 %). Plane stress keeps the
+// paper's sign (kin 6.73 %, mixed 4.67 %: docs/materials.md, limitation (i)). Only H > 0 is at stake: with H = 0 the
+// sign does not enter, and plane strain's perfect / iso errors on this path (0.99 / 1.05 %) are the lattice's over
+// a 2 sigma_bar swing, as on the uniaxial cycle.
+TEST(J2Equivalence, CyclicPureShearFollowsTensorJ2) {
+  for (Dimension dim : {Dimension::ThreeD, Dimension::PlaneStrain}) {
+    const double ratio = dim == Dimension::ThreeD ? 15.0 : 30.0;
+    for (const Hardening& h : kHardening) {
+      if (h.H == 0) continue;
+      const PathResult r = runPath(dim, ratio, Path::CyclicShear, h.K, h.H);
+      SCOPED_TRACE(std::string(dimName(dim)) + " " + h.name);
+      EXPECT_LT(r.vmErr, 0.01);
+      EXPECT_LT(r.alphaErr, 0.01);
+      ASSERT_GT(r.reverseYieldStepCl, 0);
+      EXPECT_LE(std::abs(r.reverseYieldStepPd - r.reverseYieldStepCl), 1);
+    }
+  }
+}
+
+// The plastic work the J2 models integrate (Dissipated_Energy, sigma_vm |d eps_p| V per step; the heat source of the
+// Taylor-Quinney coefficient) against the classical sum sigma_n+1 : (eps^p_n+1 - eps^p_n) of ClassicalJ2 over the
+// same paths, cyclic pure shear included. Bound 2 %: W_p = sum sigma_bar d alpha carries the relative von Mises error
+// (within 1 % of sigma_y <= sigma_bar, MatchesClassicalJ2) plus the relative plastic strain error (within 1 %), at
+// 3D 15 and 2D 30. Measured: 3D max 0.33 %, plane strain 1.00 %, plane stress 1.00 % (the shear paths).
+TEST(J2Equivalence, PlasticWorkMatchesClassicalJ2) {
+  for (Dimension dim : kDims) {
+    const double ratio = dim == Dimension::ThreeD ? 15.0 : 30.0;
+    for (const Hardening& h : kHardening)
+      for (Path path : {Path::Uniaxial, Path::Cyclic, Path::Shear, Path::CyclicShear}) {
+        const PathResult r = runPath(dim, ratio, path, h.K, h.H);
+        SCOPED_TRACE(std::string(dimName(dim)) + " " + h.name + " " + pathName(path));
+        ASSERT_GT(r.plasticWorkCl, 0.0);
+        EXPECT_LT(std::fabs(r.plasticWork / r.plasticWorkCl - 1.0), 0.02);
+      }
+  }
 }

@@ -144,14 +144,14 @@ TEST(PlasticInfluence, YieldOnsetIsTheReferences) {
 }
 
 // Plastic loading with omega != 1 (cyclic uniaxial strain to 1.2 %, iso / kin hardening): the state is
-// plastic (alpha > 5e-3), and for omega = 1 the reported von Mises equals the reference evaluated on the
-// stored plastic extension to 1e-9 (the return is exact there: measured 3e-15).
-// For omega != 1 it does not: the return enforces the yield condition on G t^d_trial (Eq. 47), but the
-// stored e^dp (flow Delta e^dp = dlambda t^d, Eq. 52) gives t^d_n+1 = t^d_tr - (B/m) omega dlambda G t^d_tr,
-// which is G t^d_tr only where omega = 1. Measured gap (max over the path, / sigma_y, H = 0 / 20 GPa):
-// Parabolic Decay 3D 0.107 / 0.134, plane strain 0.104 / 0.129, plane stress 0.185 / 0.231; Gaussian 3D
-// 0.206 / 0.225, plane strain 0.211 / 0.232, plane stress 0.290 / 0.311. Peridigm's elastic_plastic has the
-// same form; docs/materials.md, limitation iii. Asserted below 0.32 so that any change shows here.
+// plastic (alpha > 5e-3), and the reported von Mises (the return's, G t^d_trial, Eq. 47) equals the reference
+// evaluated on the stored plastic extension to 1e-10 of sigma_y in 3D and plane strain for every omega (measured
+// 2.4e-15 ... 3.4e-15), and for omega = 1 in plane stress. Since 2026-12-06 the plastic extension flows along
+// t^d_tr / omega there (J2Flow::flowOverOmega); with Eq. 52's flow along t^d_tr the stored state was
+// t^d_tr - (B/m) omega dlambda G t^d_tr, G t^d_tr only where omega = 1: gap 0.104 ... 0.232 sigma_y (Parabolic
+// Decay, Gaussian; H = 0 and 20 GPa). Plane stress keeps Eq. 52 (its theta feedback does not close with omega):
+// measured Parabolic Decay 0.185 / 0.231, Gaussian 0.290 / 0.311 (H = 0 / 20 GPa), asserted below 0.32 so that a
+// change shows here (docs/materials.md, limitation iii). Peridigm's elastic_plastic has Eq. 52's form.
 TEST(PlasticInfluence, PlasticStateAgainstReference) {
   const double ratio = 6.3;
   for (Dimension dim : kDims)
@@ -173,7 +173,7 @@ TEST(PlasticInfluence, PlasticStateAgainstReference) {
                     kindName(kind), H, gap, alphaMax);
         SCOPED_TRACE(std::string(dimName(dim)) + " " + kindName(kind) + " H = " + std::to_string(H));
         EXPECT_GT(alphaMax, 5e-3);
-        EXPECT_LT(gap, kind == Influence::One ? 1e-9 : 0.32);
+        EXPECT_LT(gap, kind == Influence::One || dim != Dimension::PlaneStress ? 1e-10 : 0.32);
       }
 }
 

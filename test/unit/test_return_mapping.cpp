@@ -311,6 +311,27 @@ TEST(ReturnMapping, VonMisesSignFromThirdMoment) {
   EXPECT_EQ(signOf(0.0, 0.0), 1.0);
 }
 
+// Kinematic hardening, a point hardened along + (q = 0.7 sigma_y) and unloading along the same direction to vm =
+// 0.4 sigma_y: sigma_vm,signed - q < 0 but |sigma_vm,signed - q| = 0.3 sigma_y < sigma_y, so the state is elastic
+// (it was returned as plastic to sigma_y - q until 2026-12-06). The same vm reversed (sign -) is 1.1 sigma_y from q:
+// it yields, and returns onto |sigma_vm,signed - q| = sigma_y with q reduced (Eqs. 45-46, 56).
+TEST(ReturnMapping, UnloadingPastTheBackStressStaysElastic) {
+  const double m = 0.8 * kPi * std::pow(kDelta, 5);
+  const double H = 20e9, q = 0.7 * kSy;
+  const OsbJ2Constants k = paperConstants(Dimension::ThreeD, m, 0, H);
+  const OsbJ2NodeState n{1e-3, q / H, q, 1.0};
+  const OsbJ2Return along = pf::osbJ2ReturnMapping(moments3D(k, m, 0.4 * kSy, 1.0), n, k);
+  ASSERT_EQ(along.status, OsbJ2Status::Ok);
+  EXPECT_EQ(along.dlambda, 0.0);
+  EXPECT_EQ(along.state.q, q);
+  EXPECT_EQ(along.state.alpha, n.alpha);
+  const OsbJ2Return against = pf::osbJ2ReturnMapping(moments3D(k, m, 0.4 * kSy, -1.0), n, k);
+  ASSERT_EQ(against.status, OsbJ2Status::Ok);
+  EXPECT_GT(against.dlambda, 0.0);
+  EXPECT_LT(against.state.q, q);
+  EXPECT_NEAR((against.vonMises + against.state.q) / kSy, 1.0, 1e-9);  // |-vm - q| = sigma_y (K = 0)
+}
+
 // Failures come back as a status (the bond loop turns them into ConstitutiveFailure).
 TEST(ReturnMapping, FailuresAreStatuses) {
   const double m = 0.8 * kPi * std::pow(kDelta, 5);

@@ -13,13 +13,15 @@ Compared, with bounds and their reasons (BOUNDS below):
   - the bore's peak and residual radial displacement;
   - no reverse yielding on unloading at r = a + dx (its equivalent plastic strain stays put), as in 1D.
 
-Kinematic hardening (--kinematic, not in ctest): at 2.5 p_y the first unloading step does not converge (Newton
-cut 4 times, then ADR, residual stuck at ~30 N): the scalar back stress is signed by the third moment of t^d
-(the PD analogue of J3), which vanishes in plane-strain plastic flow (sigma_z -> mean stress) and flips between
-iterations. At 2.0 p_y it runs (peak u -8.6 %, residual u -19 %, residual von Mises at a + dx -14 %). See
-docs/validation.md.
+Kinematic hardening (the same load, the kinematic modulus 20 GPa): until 2026-12-06 the run stopped (Newton and
+then ADR failed at t = 0.85 on loading or on the first unloading steps): the return mapping treated a hardened point
+unloading past its back stress as plastic. It now unloads and reverse-yields at r = a + dx as the 1D solution does;
+peak and residual bore displacement are bounded as for the isotropic case. The residual von Mises stress at
+r = a + dx is printed, not bounded: it is +59 % of the 1D value because the peak plastic strain there is 39 % below
+the 1D one (0.0041 against 0.0066, the same in the isotropic run, where the elastic unloading does not show it), so
+the back stress that sets the reverse yield is 81 instead of 133 MPa (docs/verification.md).
 
-usage: run_cylinder_hardening.py PERIFORGE_EXE [MPIRUN... -np N] [--kinematic]
+usage: run_cylinder_hardening.py PERIFORGE_EXE [MPIRUN... -np N] [--isotropic-only]
 """
 import os
 import sys
@@ -38,16 +40,19 @@ STEPS = 12
 MODULUS = 20.0e9
 # Measured (np 1 and 2, dx = 0.5 mm, delta = 3.015 dx): see the closing note of issue 16 and docs/validation.md.
 BOUNDS = {
-    # Measured -8.4 % (np 1 and 2). Beyond p_L the displacement is hardening-controlled: du/dp is 3x u/p, so
-    # the Pressure layer's resultant on this lattice (the 124 bore points carry 0.987 of p 2 pi a; the count of
-    # lattice points in a <= r < a + dx fluctuates with dx) gives -3.9 %; the lattice's plastic zone the rest.
+    # Measured -8.4 % (np 1 and 2; kinematic the same: monotonic loading). Beyond p_L the displacement is
+    # hardening-controlled: du/dp is 3x u/p, so the Pressure layer's resultant on this lattice (the 124 bore points
+    # carry 0.987 of p 2 pi a; the count of lattice points in a <= r < a + dx fluctuates with dx) gives -3.9 %; the
+    # lattice's plastic zone the rest.
     "peak u(a)": 0.12,
-    # Measured -11.2 %: the peak's error minus the elastic recovery's (-1 %), relative to a smaller number.
+    # Measured -11.2 % (kinematic -12.8 %): the peak's error minus the elastic recovery's (-1 %), relative to a
+    # smaller number.
     "residual u(a)": 0.15,
-    # Measured -0.5 %. A quarter of the 1D von Mises change over one dx (-24 %) at this radius; a 5 % error in
-    # the yield stress moves it by about 8 %.
+    # Measured -0.5 % (isotropic). A quarter of the 1D von Mises change over one dx (-24 %) at this radius; a 5 %
+    # error in the yield stress moves it by about 8 %. Kinematic: not bounded (module docstring).
     "residual vm(a+dx)": 0.05,
 }
+UNBOUNDED = {("kin", "residual vm(a+dx)")}
 VARS = "Displacement Von_Mises_Stress Equivalent_Plastic_Strain"
 
 
@@ -101,8 +106,11 @@ def compare(cmd, kind, failures):
                 "residual vm(a+dx)": (float(pd[2.0]["Probe_Ring2_Von_Mises_Stress"]), ref[2.0]["vm(a+dx)"], "Pa")}
     for what, (got, want, unit) in measured.items():
         err = got / want - 1
-        check(failures, abs(err) < BOUNDS[what], f"{kind} {what} = {got:.4g} {unit}, 1D J2 {want:.4g} {unit}, "
-              f"error {100 * err:+.1f} % (bound {100 * BOUNDS[what]:.0f} %)")
+        text = f"{kind} {what} = {got:.4g} {unit}, 1D J2 {want:.4g} {unit}, error {100 * err:+.1f} %"
+        if (kind, what) in UNBOUNDED:
+            print(f"info {text} (not bounded)")
+            continue
+        check(failures, abs(err) < BOUNDS[what], f"{text} (bound {100 * BOUNDS[what]:.0f} %)")
     grew = ep[2.0] > ep[1.0] * (1 + 1e-6)
     ref_grew = ref[2.0]["ep(a+dx)"] > ref[1.0]["ep(a+dx)"] * (1 + 1e-6)
     check(failures, grew == ref_grew, f"{kind} reverse yield on unloading at r = a + dx: "
@@ -110,8 +118,8 @@ def compare(cmd, kind, failures):
 
 
 def main(argv):
-    kinds = ("iso", "kin") if "--kinematic" in argv else ("iso",)
-    cmd = [a for a in argv[1:] if a != "--kinematic"]
+    kinds = ("iso",) if "--isotropic-only" in argv else ("iso", "kin")
+    cmd = [a for a in argv[1:] if a != "--isotropic-only"]
     failures = []
     check(failures, R.self_check(), "radial J2 reference: Lame within 1e-4, carries 0.99 p_L, not 1.01 p_L")
     for kind in kinds:
