@@ -102,10 +102,20 @@ std::vector<std::string> ElasticPlasticMaterial::outputs() {
   std::vector<std::string> names;
   for (const StateSpec& s : states())
     if (s.output) names.push_back(s.name);
+  names.push_back("Stored_Elastic_Energy");  // 3D (stateSpecs)
   return names;
 }
 
-std::vector<StateSpec> ElasticPlasticMaterial::stateSpecs() const { return states(); }
+std::vector<StateSpec> ElasticPlasticMaterial::stateSpecs() const {
+  std::vector<StateSpec> s = states();
+  // As Elastic's (Peridigm's 3D definition), with the elastic part e^d - e^dp of the deviatoric extension.
+  if (params_.dim == Dimension::ThreeD) s.push_back({"Stored_Elastic_Energy", Location::Node, false, true});
+  return s;
+}
+
+void ElasticPlasticMaterial::enableOutput(const std::string& name) const {
+  if (name == "Stored_Elastic_Energy") energyWanted_ = true;
+}
 
 std::vector<StateSpec> ElasticPlasticMaterial::states() {
   return {{"Deviatoric_Plastic_Extension", Location::Bond, true, false},
@@ -169,6 +179,10 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
   } else {
     osbJ2Force(fam, params_, y, f, force);
   }
+  // An extra bond pass, only when an output asks for it; the thermal extension is not taken out (as Elastic's).
+  if (energyWanted_)
+    osbElasticEnergy(fam, moduli_, y, f.theta, state.trial("Stored_Elastic_Energy"),
+                     disablePlasticity_ ? nullptr : f.edp, f.scf);
 }
 
 namespace {

@@ -26,7 +26,8 @@ class ElasticPlasticMaterial : public Material {
   static std::vector<StateSpec> states();          // what stateSpecs() returns (the same for every input)
   static std::vector<std::string> outputs();       // the output fields among them
 
-  std::vector<StateSpec> stateSpecs() const override;
+  std::vector<StateSpec> stateSpecs() const override;  // states(), and Stored_Elastic_Energy in 3D
+  void enableOutput(const std::string& name) const override;
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
@@ -56,6 +57,7 @@ class ElasticPlasticMaterial : public Material {
   double alpha_ = 0.0;              // Thermal Expansion Coefficient; 0: none
   J2Thermal thermal_;                // its coefficients in the J2 kernel
   double elasticThermal_ = 0.0;      // and in the elastic one (Disable Plasticity): thermalExpansionOf
+  mutable bool energyWanted_ = false;  // set by enableOutput("Stored_Elastic_Energy") before the run
 };
 
 }  // namespace pf

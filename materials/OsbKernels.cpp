@@ -155,7 +155,7 @@ PF_KERNEL_CLONES void osbElasticDilatationAndForce(const FamilyView& fam, const 
 }
 
 void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const double* y, const double* theta,
-                      double* energy) {
+                      double* energy, const double* edp, const double* scf) {
   const double kappa = em.bulk, alpha = 15.0 * em.shear;
   for (int i = fam.begin; i < fam.end; ++i) {
     const double* yi = y + 3 * i;
@@ -165,12 +165,12 @@ void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const doub
       const int j = fam.neighbors[b];
       const double d0 = y[3 * j] - yi[0], d1 = y[3 * j + 1] - yi[1], d2 = y[3 * j + 2] - yi[2];
       const double xi = fam.refLength[b];
-      const double ed = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2) - xi - theta[i] * xi / 3.0;
+      const double ed = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2) - xi - theta[i] * xi / 3.0 - (edp ? edp[b] : 0.0);
       const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
       sum += fam.influence[b] * ed * ed * vj;
     }
     const double m = fam.weightedVolume[i];  // 0 for a point without bonds, whose sum is 0 too
-    const double W = 0.5 * kappa * theta[i] * theta[i] + (m > 0.0 ? 0.5 * alpha / m * sum : 0.0);
+    const double W = 0.5 * kappa * theta[i] * theta[i] + (m > 0.0 ? 0.5 * alpha / m * sum * (scf ? scf[i] : 1.0) : 0.0);
     energy[i] = W * fam.volume[i];
   }
 }

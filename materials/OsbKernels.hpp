@@ -23,10 +23,11 @@ void osbElasticDilatationAndForce(const FamilyView& fam, const OsbConstants& c, 
                                   double* force);
 
 // Stored elastic energy V_i W_i of owned i in [begin, end) (Peridigm's Stored_Elastic_Energy, 3D):
-//   W_i = kappa theta_i^2 / 2 + (15 mu / (2 m_i)) sum_j omega_ij (e_ij - theta_i |xi_ij| / 3)^2 V_j
-// with the bond's partial-volume share of V_j when the family has one; theta as osbDilatation gives it.
+//   W_i = kappa theta_i^2 / 2 + s_i (15 mu / (2 m_i)) sum_j omega_ij (e_ij - theta_i |xi_ij| / 3 - e^dp_ij)^2 V_j
+// with the bond's partial-volume share of V_j when the family has one; theta as the force evaluation gives it;
+// edp: the J2 models' deviatoric plastic extension (null: 0), scf: Peridigm's shear correction factor (null: s = 1).
 void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const double* y, const double* theta,
-                      double* energy);
+                      double* energy, const double* edp = nullptr, const double* scf = nullptr);
 
 // Upper bound of sum_j |dF_i/du_j| of the elastic force for owned i in [begin, end), from the two
 // terms of t (direct extension and dilatation coupling), both ends of each bond counted.

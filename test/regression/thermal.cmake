@@ -74,10 +74,10 @@ periforge_check(thermal_taylor_adiabatic_np1_vs_np2 "thermal_taylor_adiabatic_np
   ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
   ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_adiabatic_np2/taylor_adiabatic.e
   ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_adiabatic_np1/taylor_adiabatic.e ${REG}/thermal/np_agreement.comp)
-# The same adiabatic check for the OSB J2 model's plastic work (Elastic Plastic Hardening, to 20 us), np 2.
+# The same checks for the OSB J2 model's plastic work and stored energy (Elastic Plastic Hardening, to 20 us), np 2.
 periforge_run(thermal_taylor_adiabatic_j2_np2 ${REG}/thermal/taylor_adiabatic_j2.xml 2)
 periforge_check(thermal_taylor_adiabatic_j2_np2_check thermal_taylor_adiabatic_j2_np2
-  ${PY} ${REG}/thermal/check_heating.py j2
+  ${PY} ${REG}/thermal/check_heating.py adiabatic
   ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_taylor_adiabatic_j2_np2/taylor_adiabatic_j2.e)
 periforge_run(thermal_taylor_conducting_np2 ${REG}/thermal/taylor_conducting.xml 2)
 periforge_check(thermal_taylor_conducting_np2_check thermal_taylor_conducting_np2
