@@ -168,19 +168,16 @@ namespace {
   throw ConstitutiveFailure(msg.str());
 }
 
-// e^dp_n+1 = e^dp_n + a1 (t^d - pp x) + a2 x (Eqs. 52, 58: the returned t_perp and pp x scaled by
-// dlambda and phi), written to ep; returns the dilatation sum over the new e^dp (Eq. 16), in the order
-// of osb::dilatationSum.
-template <bool Unit>
+// Writes the new plastic extension e^dp_n+1 = extension(k, chunk) of each chunk to ep and returns the dilatation
+// sum over it (Eq. 16), in the order of osb::dilatationSum.
+template <bool Unit, class Extension>
 PF_INLINE double updatePlasticExtension(const double* __restrict w, const double* __restrict xr,
-                                        const double* __restrict len, const double* __restrict epN,
-                                        const double* __restrict vj, const double* __restrict tdv, double a1,
-                                        double a2, double pp, int n, bool inBlock,
-                                        double* __restrict ep) {
+                                        const double* __restrict len, const double* __restrict vj, int n,
+                                        bool inBlock, double* __restrict ep, const Extension& extension) {
   osb::Lanes acc = {};
   osb::forEachChunk(n, inBlock, [&](int k, auto c) {
     const osb::Lanes x = c.load(xr + k);
-    const osb::Lanes e = c.load(epN + k) + a1 * (c.load(tdv + k) - pp * x) + a2 * x;
+    const osb::Lanes e = extension(k, c);
     c.store(ep + k, e);
     acc += osb::weighted<Unit>(c, w, k, x) * ((c.load(len + k) - x) - e) * c.load(vj + k);
   });
@@ -193,23 +190,6 @@ PF_INLINE double alongCommitted(const double* __restrict ep, const double* __res
   osb::Lanes along = {};
   osb::forEachChunk(n, inBlock, [&](int k, auto c) { along += c.load(ep + k) * c.load(epN + k) * c.load(vj + k); });
   return osb::laneSum(along);
-}
-
-// The same for a non-unit influence in 3D and plane strain (J2Flow::flowOverOmega): e^dp_n+1 = e^dp_n + a1 u with
-// u = t^d_tr / omega (trialExtensionFlow), so that omega bm (e - c theta x - e^dp_n+1) = G1 t^d_tr, the returned state.
-template <bool Unit>
-PF_INLINE double updatePlasticExtensionOverOmega(const double* __restrict w, const double* __restrict xr,
-                                                 const double* __restrict len, const double* __restrict epN,
-                                                 const double* __restrict vj, double bm, double cth, double a1, int n,
-                                                 bool inBlock, double* __restrict ep) {
-  osb::Lanes acc = {};
-  osb::forEachChunk(n, inBlock, [&](int k, auto c) {
-    const osb::Lanes x = c.load(xr + k);
-    const osb::Lanes e = c.load(epN + k) + a1 * trialExtensionFlow(c, xr, len, epN, bm, cth, k);
-    c.store(ep + k, e);
-    acc += osb::weighted<Unit>(c, w, k, x) * ((c.load(len + k) - x) - e) * c.load(vj + k);
-  });
-  return osb::laneSum(acc);
 }
 
 // Force from the updated state, written as osbElasticForce writes it (t = t^iso + t^d, Eqs. 7-13
@@ -275,9 +255,18 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
   if (r.dlambda > 0.0) {
     const double a1 = r.dlambda * r.G1, a2 = r.dlambda * flow.phi * r.G2 * r.pp;
     const bool overOmega = !Unit && flow.flowOverOmega;
+    // Eqs. 52, 58: e^dp_n + a1 (t^d - pp x) + a2 x, the returned t_perp and pp x scaled by dlambda and phi; or, for a
+    // non-unit influence in 3D and plane strain (J2Flow::flowOverOmega), e^dp_n + a1 u with u = t^d_tr / omega
+    // (trialExtensionFlow), so that omega bm (e - c theta x - e^dp_n+1) = G1 t^d_tr, the returned state.
+    const double pp = r.pp, bm = k.bm, cth = c.c * thetaTr;
     const double sum =
-        overOmega ? updatePlasticExtensionOverOmega<Unit>(w, xr, len, epN, vj, k.bm, c.c * thetaTr, a1, n, inBlock, ep)
-                  : updatePlasticExtension<Unit>(w, xr, len, epN, vj, tdv, a1, a2, r.pp, n, inBlock, ep);
+        overOmega ? updatePlasticExtension<Unit>(w, xr, len, vj, n, inBlock, ep, [&](int b, auto ch) {
+                      return ch.load(epN + b) + a1 * trialExtensionFlow(ch, xr, len, epN, bm, cth, b);
+                    })
+                  : updatePlasticExtension<Unit>(w, xr, len, vj, n, inBlock, ep, [&](int b, auto ch) {
+                      const osb::Lanes x = ch.load(xr + b);
+                      return ch.load(epN + b) + a1 * (ch.load(tdv + b) - pp * x) + a2 * x;
+                    });
     // Plane strain: theta from the total extension, i.e. the trial one (see J2Flow::beta).
     if (flow.beta) theta = c.k * c.D * sum / m;
     // q is measured along e^dp: when the flow carried e^dp through zero, its direction, and so q's sign, turned. With
