@@ -114,7 +114,8 @@ def compare(cmd, kind, failures):
     grew = ep[2.0] > ep[1.0] * (1 + 1e-6)
     ref_grew = ref[2.0]["ep(a+dx)"] > ref[1.0]["ep(a+dx)"] * (1 + 1e-6)
     check(failures, grew == ref_grew, f"{kind} reverse yield on unloading at r = a + dx: "
-          f"{'yes' if grew else 'no'} (eps_p {ep[1.0]:.4g} -> {ep[2.0]:.4g}), 1D J2 {'yes' if ref_grew else 'no'}")
+          f"{'yes' if grew else 'no'} (eps_p {ep[1.0]:.4g} -> {ep[2.0]:.4g}), 1D J2 {'yes' if ref_grew else 'no'} "
+          f"(eps_p {ref[1.0]['ep(a+dx)']:.4g} -> {ref[2.0]['ep(a+dx)']:.4g})")
 
 
 def main(argv):
