@@ -26,9 +26,11 @@ struct SolverEntry {
   // The field it advances: "Displacement" (the mechanics solvers) or "Temperature" (ImplicitDiffusion). The deck's
   // Solver flags `Solve For Displacement` / `Solve For Temperature` must agree with it.
   std::string solves = "Displacement";
-  // Further fields a deck may make it advance with `Solve For <field>` = true (Verlet: Temperature); with one of
-  // them it may also leave out its own (`Solve For Displacement` = false: a thermal-only explicit run).
+  // Further fields a deck may make it advance with `Solve For <field>` = true (Verlet, the quasi-static Newton
+  // solvers: Temperature); with mayOmitOwn it may also leave out its own (Verlet's `Solve For Displacement` = false:
+  // a thermal-only explicit run).
   std::vector<std::string> mayAlsoSolve;
+  bool mayOmitOwn = false;
   std::function<std::unique_ptr<Solver>(const ParameterValues& options, const ParamTree& passThrough)> create;
 };
 

@@ -74,8 +74,9 @@ std::vector<ParameterSpec> solverListSpecs() {
           S::flag("Solve For Displacement", "Peridigm's: whether the solver advances the displacement; true for all "
                                             "but ImplicitDiffusion (Verlet: false for a thermal-only run)"),
           S::flag("Solve For Temperature", "Peridigm's: whether the solver advances the Temperature field: "
-                                           "ImplicitDiffusion always, Verlet when true (explicit conduction and "
-                                           "heating, sub-cycled; docs/thermal.md)"),
+                                           "ImplicitDiffusion always; Verlet when true (explicit conduction and "
+                                           "heating, sub-cycled); NOXQuasiStatic and QuasiStatic when true (a "
+                                           "Backward Euler step after each load step; docs/thermal.md)"),
           S::flag("Solve For Pressure", "Peridigm's fluid-pressure field: not available (true is an input error)")};
 }
 
@@ -93,8 +94,8 @@ std::vector<std::string> solvedFields(const ParameterValues& list, const SolverE
     const bool wanted = list.has(flag) ? list.flag(flag) : own;
     if (wanted && !own && !optional)
       fail(file, path, "'" + flag + "' = true but solver '" + entry.name + "' does not advance the " + field +
-                           (field == "Temperature" ? " (ImplicitDiffusion and Verlet do)" : ""));
-    if (!wanted && own && entry.mayAlsoSolve.empty())
+                           (field == "Temperature" ? " (ImplicitDiffusion, Verlet, NOXQuasiStatic and QuasiStatic do)" : ""));
+    if (!wanted && own && !entry.mayOmitOwn)
       fail(file, path, "'" + flag + "' = false but solver '" + entry.name + "' advances the " + field);
     if (wanted) fields.push_back(field);
   }

@@ -9,6 +9,7 @@
 // each load step, converged to Relative Tolerance of the step's initial residual. The displacement stays as it is.
 #include <string>
 
+#include "ImplicitFieldStep.hpp"
 #include "Solver.hpp"
 #include "core/SolverEntry.hpp"
 
@@ -34,8 +35,7 @@ class ImplicitDiffusionSolver : public Solver {
 
  private:
   ImplicitDiffusionOptions opt_;
-  int solveStep(Model& model, double tPrev, double t, std::vector<double>& T, std::vector<double>& rate,
-                double& residual, double& tol) const;
+  ImplicitFieldOptions fieldOptions() const;
 };
 
 }  // namespace pf

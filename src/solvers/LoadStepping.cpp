@@ -94,7 +94,10 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     peakLoad = std::max(peakLoad, s.load);
     carry.scalars[0].second = peakLoad;
     // f for output; the state is committed already
-    atStep(CheckPoint{"quasi-static", step, tB}, [&] { model.internalForce(u.data(), f.data()); });
+    if (s.force)
+      f = *s.force;
+    else
+      atStep(CheckPoint{"quasi-static", step, tB}, [&] { model.internalForce(u.data(), f.data()); });
     double probe = 0.0;  // non-finite iff some u, v or f is: nothing non-finite is reported
     for (int k = 0; k < n; ++k) {
       v[k] = duPrev[k] / dt;

@@ -35,6 +35,10 @@ struct StepStats {
   int rounds = -1;  // loading-balance relaxations of the step (YieldRounds.hpp); -1: not used
   int nonlinearIterations = 0;  // StepReport::nonlinearIterations
   int outputEveryFactor = 1;    // StepReport::outputEveryFactor
+  // The internal force density of the committed state, when the solver kept it: reported instead of a new evaluation
+  // at the step's end, which would see a field the solver advanced after the mechanics (a staggered temperature) and
+  // present a stress the mechanics never converged to.
+  const std::vector<double>* force = nullptr;
   // Retry: the step did not converge and the solver changed the times list (a shorter step inserted); solve the
   // step again from the same state. Stop: end the load stepping here (the state is the last reported step's).
   enum class Outcome { Converged, Retry, Stop };

@@ -92,6 +92,7 @@ SolverEntry NoxQuasiStaticSolver::entry() {
                                              "has one, else a forward difference; `Finite Difference` = always the "
                                              "forward difference of the force (for comparisons)")
                              .oneOf({"Exact", "Finite Difference"}).byDefault("Exact"));
+  e.mayAlsoSolve = {"Temperature"};
   e.passThrough = {"Direction", "Line Search", "Printing", "Solver Options"};
   e.create = [](const ParameterValues& p, const ParamTree& pass) { return create(p, pass, false); };
   return e;
@@ -109,6 +110,7 @@ SolverEntry NoxQuasiStaticSolver::peridigmEntry() {
   e.parameters.push_back(S::text("Belos Linear Solver", "Peridigm's Krylov method; accepted, Periforge's is GMRES (each "
                                                         "step converges to the same tolerance)")
                              .oneOf({"BlockCG", "BlockGmres", "Block CG", "Block GMRES", "GMRES", "CG"}));
+  e.mayAlsoSolve = {"Temperature"};
   e.passThrough = {"Adaptive Load-Stepping"};
   e.create = [](const ParameterValues& p, const ParamTree& pass) { return create(p, pass, true); };
   return e;

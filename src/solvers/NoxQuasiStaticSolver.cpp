@@ -16,16 +16,6 @@ NoxQuasiStaticSolver::~NoxQuasiStaticSolver() = default;
 
 namespace {
 
-// A step's end, converged at u: the model's state committed (from a last force pass at u: the last residual may have
-// been a perturbed one), its break rounds ended, and duPrev = the step's increment from uA.
-void commitStep(Model& model, const std::vector<double>& u, const std::vector<double>& uA, std::vector<double>& duPrev) {
-  std::vector<double> f(model.numDofs());
-  model.internalForce(u.data(), f.data());
-  model.commit();
-  model.endBreakRounds();
-  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
-}
-
 // A step's residual and bound in the measure the deck set, for its messages: Peridigm's ||r||_2 + 20 ||r||_inf against
 // its Absolute Tolerance for Peridigm's QuasiStatic with one, else the force residual against the relative bound (0
 // when the deck gives only an absolute tolerance: printing it said "tolerance 0").
@@ -41,6 +31,39 @@ DeckMeasure deckMeasure(const NewtonKrylovOptions& newton, const NewtonOutcome& 
 
 }  // namespace
 
+ImplicitFieldOptions NoxQuasiStaticSolver::heatOptions() const {
+  ImplicitFieldOptions o;
+  // The heat equation is linear in T: one Newton iteration (a Krylov solve to 1e-12) meets this.
+  o.relativeTolerance = kHeatRelativeTolerance;
+  o.transient = true;
+  o.where = opt_.newton.where;
+  o.transientBy = "'Solve For Temperature' = true";
+  return o;
+}
+
+void NoxQuasiStaticSolver::check(const Model& model) const {
+  if (advances("Temperature")) ImplicitFieldStep(model, "Temperature", heatOptions());
+}
+
+void NoxQuasiStaticSolver::startHeat(Model& model) {
+  if (!advances("Temperature")) return;
+  model.fields().setSolved("Temperature");
+  heat_ = std::make_unique<ImplicitFieldStep>(model, "Temperature", heatOptions());
+}
+
+// The model's state is committed from a last force pass at u (the last residual may have been a perturbed one); the
+// heat step reads that pass's trial state (plastic heating); the break rounds end; duPrev = the step's increment.
+void NoxQuasiStaticSolver::commitStep(Model& model, const std::vector<double>& u, const std::vector<double>& uA,
+                                      std::vector<double>& duPrev, double tA, double tB) {
+  std::vector<double>& f = committedForce_;
+  f.resize(static_cast<std::size_t>(model.numDofs()));
+  model.internalForce(u.data(), f.data());
+  if (heat_) heat_->advance(model, tA, tB, true);
+  model.commit();
+  model.endBreakRounds();
+  for (std::size_t k = 0; k < u.size(); ++k) duPrev[k] = u[k] - uA[k];
+}
+
 NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::vector<double>& u,
                                                             std::vector<double>& duPrev, double tA, double tB,
                                                             int depth, double loadFloor) {
@@ -51,7 +74,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   // state (BreakRounds.hpp); without, this is one Newton solve.
   Outcome o = newton_.solveWithBreaks(model, u, tB, nullptr, loadFloor);
   if (o.converged) {
-    commitStep(model, u, uA, duPrev);
+    commitStep(model, u, uA, duPrev, tA, tB);
     return o;
   }
   model.rollback();
@@ -79,12 +102,13 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
     r = adr.relax(model, u, tB, uA, step_, loadFloor);  // throws SolverFailure if it fails too
     return true;
   }, tB);
-  commitStep(model, u, uA, duPrev);
+  commitStep(model, u, uA, duPrev, tA, tB);
   return Outcome{true, r.iterations, 0, r.residual, r.tolerance, 0.0, r.load};
 }
 
 void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                                const std::vector<double>& times, StepObserver& observer) {
+  startHeat(model);
   if (opt_.adaptive.on) return runAdaptive(model, u, v, times, observer);
   const SolverResume* resume = takeResume();
   step_ = resume ? resume->step : 0;
@@ -96,10 +120,18 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
                  // Peridigm counts each NOX step() call, one even when the step starts converged (NOX then
                  // iterates 0 times), and its own QuasiStatic Newton each iteration (Peridigm.cpp).
                  s.nonlinearIterations = opt_.newton.peridigmAbsolute ? o.iterations : std::max(1, o.iterations);
+                 if (heat_) s.force = &committedForce_;
                  return s;
                },
                resume);
   printWork(model, newton_.work());
+  printHeatWork(model);
+}
+
+void NoxQuasiStaticSolver::printHeatWork(const Model& model) const {
+  if (heat_ && model.layout().rank() == 0)
+    std::printf("NOXQuasiStatic: Temperature by Backward Euler after each step: %ld Newton iterations\n",
+                heat_->iterationsTaken());
 }
 
 namespace {
@@ -151,9 +183,10 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
                  StepStats s{o.iterations, o.linearIterations, o.residual, o.tolerance, o.load};
                  s.nonlinearIterations = o.iterations;
                  if (o.converged) {
-                   commitStep(model, u, uA, duPrev);
+                   commitStep(model, u, uA, duPrev, tA, tB);
                    inStep = 0;
                    s.outputEveryFactor = outputFactor;
+                   if (heat_) s.force = &committedForce_;
                    return s;
                  }
                  model.rollback();
@@ -182,10 +215,12 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
                },
                nullptr);
   printWork(model, newton_.work());
+  printHeatWork(model);
   if (switchAt < 0.0) return;
   if (root) std::printf("periforge: QuasiStatic: switching to Verlet at t = %g (Adaptive Load-Stepping)\n", switchAt);
   VerletSolver verlet(a.verlet);
-  verlet.setFields({"Displacement"});
+  verlet.setFields(advances("Temperature") ? std::vector<std::string>{"Displacement", "Temperature"}
+                                            : std::vector<std::string>{"Displacement"});
   verlet.check(model);
   ExplicitCadence cadence(observer, a.verletOutputFrequency);
   verlet.run(model, u, v, {switchAt, given.back()}, cadence);

@@ -25,6 +25,7 @@ SolverEntry VerletSolver::entry() {
   e.doc = "explicit central-difference (velocity-Verlet) time integration with the lumped density";
   e.dynamic = true;
   e.mayAlsoSolve = {"Temperature"};
+  e.mayOmitOwn = true;
   e.parameters = {S::real("Fixed dt", "time step; the run takes floor((Final Time − Initial Time) / dt) steps, as "
                                       "Peridigm; default: `Safety Factor` × the stable step estimate, shortened to end on "
                                       "Final Time; above that estimate a warning, above 2 × it an input error").positive(),

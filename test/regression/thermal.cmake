@@ -100,3 +100,16 @@ endforeach()
 add_test(NAME restart_thermal_taylor_kill_np1_np1
          COMMAND ${PY} ${REG}/restart/run_restart.py kill ${REG}/thermal/taylor_restart.xml 1 1 ${PERIFORGE_EXE} ${MPIRUN})
 set_tests_properties(restart_thermal_taylor_kill_np1_np1 PROPERTIES LABELS "regression" TIMEOUT 600)
+# Temperature advanced beside a quasi-static mechanics (NOXQuasiStatic with Solve For Temperature: a Backward Euler
+# heat step after each converged load step): a free 3D block heated uniformly (the expansion of each step's start
+# temperature), and a clamped plane-stress J2 block heated by a flux and by its own plastic work, adiabatic, against
+# a classical integration of the staggered scheme (check_coupled_qs.py); np 1 and 2.
+foreach(np 1 2)
+  foreach(case free_3d heating_plane_stress)
+    string(REGEX REPLACE "_.*" "" mode ${case})
+    set(name thermal_coupled_qs_${case}_np${np})
+    periforge_run(${name} ${REG}/thermal/coupled_qs_${case}.xml ${np})
+    periforge_check(${name}_check ${name} ${PY} ${REG}/thermal/check_coupled_qs.py ${mode}
+      ${CMAKE_CURRENT_BINARY_DIR}/regression/${name}/coupled_qs_${case}.e)
+  endforeach()
+endforeach()
