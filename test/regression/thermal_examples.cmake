@@ -11,3 +11,9 @@ foreach(np 1 2)
   periforge_check(${name}_check ${name}
     ${PY} ${THERMAL_EX}/check_plate_hole.py ${CMAKE_CURRENT_BINARY_DIR}/regression/${name}/plate_hole_steady_coarse.e)
 endforeach()
+# Example (a): transient conduction in a 40 x 4 mm plane-stress bar whose end is raised by 100 K (bar_erfc.xml,
+# Verlet, thermal only) against the semi-infinite solid's erfc solution: within 1 % of the rise at the points a
+# horizon from the insulated sides (measured 0.57 %, the sides' surface effect; check_bar_erfc.py). np 2.
+periforge_run(thermal_bar_erfc_np2 ${THERMAL_EX}/bar_erfc.xml 2)
+periforge_check(thermal_bar_erfc_np2_check thermal_bar_erfc_np2
+  ${PY} ${THERMAL_EX}/check_bar_erfc.py ${CMAKE_CURRENT_BINARY_DIR}/regression/thermal_bar_erfc_np2/bar_erfc.e)
