@@ -24,7 +24,7 @@ const std::vector<std::string>& fieldScalarOutputs() {
 
 const std::vector<std::string>& globalFields() {
   static const std::vector<std::string> v = {"Global_Kinetic_Energy", "Global_Strain_Energy", "Global_Dissipated_Energy",
-                                             "Global_Wall_Energy_Loss", "Global_Contact_Energy",
+                                             "Global_Wall_Energy_Loss", "Global_Contact_Energy", "Global_Heat",
                                              "Nonlinear_Solver_Iterations"};
   return v;
 }

@@ -40,6 +40,7 @@ std::string transposedComponentName(const std::string& name);
 //   Global_Dissipated_Energy = sum Dissipated_Energy       (plastic work; every block's material declares it)
 //   Global_Wall_Energy_Loss  = sum Rigid_Wall_Energy_Loss  (the model's Rigid Walls: kinetic energy removed)
 //   Global_Contact_Energy    = the energy the contact springs store (Model::termEnergy)
+//   Global_Heat              = sum rho c (T - T_start) V  (the heat the Temperature field holds beyond its start)
 const char* globalSourceField(const std::string& global);
 
 }  // namespace pf

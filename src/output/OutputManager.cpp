@@ -293,6 +293,11 @@ void OutputManager::writeExodusStep(double time, const std::vector<double>& u, c
     }
     if (var == "Global_Contact_Energy") {
       e = model_.termEnergy();
+    } else if (var == "Global_Heat") {  // sum rho c (T - T_start) V
+      std::vector<double> c(static_cast<std::size_t>(model_.numOwned()));
+      model_.fieldCapacity("Temperature", c.data());
+      const double* change = model_.state().committed("Temperature_Change");
+      for (int i = 0; i < model_.numOwned(); ++i) e += c[i] * change[i] * model_.volume()[i];
     } else if (const char* field = globalSourceField(var)) {  // a node field of energies per node, summed
       const double* per = model_.state().committed(field);
       for (int i = 0; i < model_.numOwned(); ++i) e += per[i];
