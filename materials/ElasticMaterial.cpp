@@ -58,7 +58,11 @@ void ElasticMaterial::computeForce(const FamilyView& fam, const double* y, State
   else
     osbElasticDilatationAndForce(fam, osb_, y, theta, force);
   // Peridigm's Stored_Elastic_Energy: an extra bond pass, so only when an output asks for it.
-  if (energyWanted_) osbElasticEnergy(fam, moduli_, y, theta, state.trial("Stored_Elastic_Energy"));
+  // With thermal expansion the stored energy is that of the mechanical extension (3D: e less alpha dT |xi|).
+  if (energyWanted_)
+    osbElasticEnergy(fam, moduli_, y, theta, state.trial("Stored_Elastic_Energy"), nullptr, nullptr,
+                     thermalCoefficient_,
+                     thermalCoefficient_ != 0.0 ? fam.fields->find("Temperature_Change") : nullptr);
 }
 
 void ElasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {
@@ -74,7 +78,10 @@ void ElasticMaterial::pairStiffness(const FamilyView& fam, double* c) const { os
 namespace pf {
 bool ElasticMaterial::forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore&,
                                       double* dforce) const {
-  osbElasticForceDerivative(fam, osb_, y, dy, dforce);
+  if (thermalCoefficient_ != 0.0)
+    osbElasticForceDerivative(fam, osb_, y, dy, dforce, thermalCoefficient_, fam.fields->find("Temperature_Change"));
+  else
+    osbElasticForceDerivative(fam, osb_, y, dy, dforce);
   return true;
 }
 }  // namespace pf

@@ -23,8 +23,8 @@ class ElasticMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
-  // With thermal expansion the implicit solvers differentiate numerically (the thermal kernel has no tangent yet).
-  bool hasForceDerivative() const override { return thermalCoefficient_ == 0.0; }
+  // Exact with thermal expansion too: the thermal stretch shifts the extension, not its derivative.
+  bool hasForceDerivative() const override { return true; }
   bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
                        double* dforce) const override;
   void enableOutput(const std::string& name) const override;

@@ -179,10 +179,11 @@ void ElasticPlasticMaterial::computeForce(const FamilyView& fam, const double* y
   } else {
     osbJ2Force(fam, params_, y, f, force);
   }
-  // An extra bond pass, only when an output asks for it; the thermal extension is not taken out (as Elastic's).
+  // An extra bond pass, only when an output asks for it (3D: the thermal extension alpha dT |xi| taken out).
   if (energyWanted_)
     osbElasticEnergy(fam, moduli_, y, f.theta, state.trial("Stored_Elastic_Energy"),
-                     disablePlasticity_ ? nullptr : f.edp, f.scf);
+                     disablePlasticity_ ? nullptr : f.edp, f.scf, alpha_,
+                     alpha_ != 0.0 ? fam.fields->find("Temperature_Change") : nullptr);
 }
 
 namespace {

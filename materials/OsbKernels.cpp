@@ -155,17 +155,19 @@ PF_KERNEL_CLONES void osbElasticDilatationAndForce(const FamilyView& fam, const 
 }
 
 void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const double* y, const double* theta,
-                      double* energy, const double* edp, const double* scf) {
+                      double* energy, const double* edp, const double* scf, double thermal, const double* dT) {
   const double kappa = em.bulk, alpha = 15.0 * em.shear;
   for (int i = fam.begin; i < fam.end; ++i) {
     const double* yi = y + 3 * i;
+    const double strain = dT ? thermal * dT[i] : 0.0;  // the free thermal stretch of node i's bonds
     double sum = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
       if (fam.brokenN && fam.broken[b] != 0.0) continue;  // as set by the force evaluation just before
       const int j = fam.neighbors[b];
       const double d0 = y[3 * j] - yi[0], d1 = y[3 * j + 1] - yi[1], d2 = y[3 * j + 2] - yi[2];
       const double xi = fam.refLength[b];
-      const double ed = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2) - xi - theta[i] * xi / 3.0 - (edp ? edp[b] : 0.0);
+      const double ed =
+          std::sqrt(d0 * d0 + d1 * d1 + d2 * d2) - xi - strain * xi - theta[i] * xi / 3.0 - (edp ? edp[b] : 0.0);
       const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
       sum += fam.influence[b] * ed * ed * vj;
     }
@@ -176,7 +178,7 @@ void osbElasticEnergy(const FamilyView& fam, const ElasticModuli& em, const doub
 }
 
 void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, const double* y, const double* dy,
-                               double* dforce) {
+                               double* dforce, double thermal, const double* dT) {
   const double* V = fam.volume;
   osb::FamilyScratch& sc = osb::familyScratch(fam);
   const osb::NodeRecords rec = osb::nodeRecords(fam, y, nullptr);
@@ -187,6 +189,9 @@ void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, con
     const double* x = fam.refLength + off;
     const double* w = fam.influence + off;
     const double invm = 1.0 / fam.weightedVolume[i];
+    // The free thermal stretch of node i's bonds (osbThermoelasticDilatationAndForce): it shifts the extension, and
+    // with it theta and t, but not their derivatives.
+    const double strain = dT ? thermal * dT[i] : 0.0;
     // theta and its derivative first: t depends on the whole family through them. sc.a = de = M . dY.
     double theta = 0.0, dtheta = 0.0;
     for (int k = 0; k < nb; ++k) {
@@ -194,7 +199,7 @@ void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, con
       const double dd0 = dy[3 * j] - dy[3 * i], dd1 = dy[3 * j + 1] - dy[3 * i + 1], dd2 = dy[3 * j + 2] - dy[3 * i + 2];
       sc.a[k] = (sc.d0[k] * dd0 + sc.d1[k] * dd1 + sc.d2[k] * dd2) / sc.len[k];
       const double wx = w[k] * x[k] * sc.vj[k];
-      theta += wx * (sc.len[k] - x[k]);
+      theta += wx * (sc.len[k] - x[k] - strain * x[k]);
       dtheta += wx * sc.a[k];
     }
     theta *= c.k * c.D * invm;
@@ -206,7 +211,7 @@ void osbElasticForceDerivative(const FamilyView& fam, const OsbConstants& c, con
       const double dd[3] = {dy[3 * j] - dy[3 * i], dy[3 * j + 1] - dy[3 * i + 1], dy[3 * j + 2] - dy[3 * i + 2]};
       const double len = sc.len[k], de = sc.a[k];
       const double M[3] = {sc.d0[k] / len, sc.d1[k] / len, sc.d2[k] / len};
-      const double t = w[k] * (iso * theta * x[k] + dev * (len - x[k]));
+      const double t = w[k] * (iso * theta * x[k] + dev * (len - x[k] - strain * x[k]));
       const double dt = w[k] * (iso * dtheta * x[k] + dev * de);
       // d(t M) = dt M + t (I - M M^T) dY / |Y|
       const double Vi = fam.fraction ? V[i] * fam.fraction[off + k] : V[i];  // as addBondForces

@@ -99,8 +99,37 @@ def main(kind, dim, path):
         print(f"clamped {dim}: sigma_mean {sigma.min():.6e} .. {sigma.max():.6e} Pa, closed form {closed:.6e} Pa, "
               f"max rel. error {err:.3e}; max |u| = {umax:.1e}")
         ok = ok and err < 1e-2 and umax == 0.0
+    if dim == "3d":
+        ok = check_energy(kind, path) and ok
     print("check_thermal: PASS" if ok else "check_thermal: FAIL")
     return 0 if ok else 1
+
+
+def check_energy(kind, path):
+    """3D Elastic: Stored_Elastic_Energy is that of the mechanical extension. Free: 0 (below 1e-9 of the clamped
+    density times V: the expansion stores nothing); clamped: K theta^2 / 2 V with theta = -3 alpha dT at every point
+    (the deviatoric part vanishes; 1e-9 relative, the dilatation is exact to round-off). Counting the thermal extension
+    as strain would give the clamped value to the free block and 0 to the clamped one."""
+    d = Dataset(path)
+    d.set_auto_mask(False)
+    ele = ["".join(c.decode() for c in row if c).strip() for row in d.variables["name_elem_var"][:]]
+    nod = ["".join(c.decode() for c in row if c).strip() for row in d.variables["name_nod_var"][:]]
+
+    def last(name):
+        if name in nod:
+            return np.asarray(d.variables[f"vals_nod_var{nod.index(name) + 1}"][-1, :])
+        return np.asarray(d.variables[f"vals_elem_var{ele.index(name) + 1}eb1"][-1, :])
+    density = last("Stored_Elastic_Energy") / last("Volume")
+    clamped = 0.5 * K * (3 * ALPHA * DT) ** 2
+    if kind == "free":
+        err = np.max(np.abs(density)) / clamped
+        print(f"free 3d: max Stored_Elastic_Energy / V = {np.max(np.abs(density)):.3e} J/m^3, {err:.2e} of the clamped "
+              f"block's {clamped:.6e}")
+    else:
+        err = np.max(np.abs(density - clamped)) / clamped
+        print(f"clamped 3d: Stored_Elastic_Energy / V {density.min():.9e} .. {density.max():.9e} J/m^3, closed form "
+              f"K (3 alpha dT)^2 / 2 = {clamped:.9e}, max rel. error {err:.2e}")
+    return err < 1e-9
 
 
 if __name__ == "__main__":
