@@ -105,6 +105,12 @@ endforeach()
 add_test(NAME restart_thermal_taylor_kill_np1_np1
          COMMAND ${PY} ${REG}/restart/run_restart.py kill ${REG}/thermal/taylor_restart.xml 1 1 ${PERIFORGE_EXE} ${MPIRUN})
 set_tests_properties(restart_thermal_taylor_kill_np1_np1 PROPERTIES LABELS "regression" TIMEOUT 600)
+# The same for the quasi-static coupled path (NOXQuasiStatic with Solve For Temperature on the coarse plate with a
+# hole, J2 with thermal expansion, conduction and plastic heating): killed after step 15's checkpoint, restarted, the
+# files byte-identical, np 1.
+add_test(NAME restart_thermal_coupled_qs_kill_np1_np1
+         COMMAND ${PY} ${REG}/restart/run_restart.py kill ${REG}/thermal/restart_coupled_qs.xml 1 1 ${PERIFORGE_EXE} ${MPIRUN})
+set_tests_properties(restart_thermal_coupled_qs_kill_np1_np1 PROPERTIES LABELS "regression" TIMEOUT 600)
 # Temperature advanced beside a quasi-static mechanics (NOXQuasiStatic with Solve For Temperature: a Backward Euler
 # heat step after each converged load step): a free 3D block heated uniformly (the expansion of each step's start
 # temperature), and a clamped plane-stress J2 block heated by a flux and by its own plastic work, adiabatic, against
