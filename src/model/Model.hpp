@@ -207,6 +207,8 @@ class Model {
   void fieldDiagonal(const std::string& field, double* diag) const;
   // Per owned node: the capacity per volume (rho c) of its block's terms on `field`, 0 where it has none.
   void fieldCapacity(const std::string& field, double* capacity) const;
+  // Collective: whether every point (on every rank) has a capacity on `field` (> 0), the field existing.
+  bool capacityEverywhere(const std::string& field) const;
   // Per owned node: the blocks' sources on `field` (W/m^3 for Temperature) over the last evaluated step of length dt
   // (the trial state less the committed one: call between internalForce and commit).
   void fieldSource(const std::string& field, double dt, double* source) const;

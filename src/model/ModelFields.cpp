@@ -78,6 +78,16 @@ void Model::fieldCapacity(const std::string& field, double* capacity) const {
   });
 }
 
+bool Model::capacityEverywhere(const std::string& field) const {
+  double missing = fields_.has(field) ? 0.0 : 1.0;
+  if (missing == 0.0) {
+    std::vector<double> c(static_cast<std::size_t>(numOwned()));
+    fieldCapacity(field, c.data());
+    for (double x : c) missing = x > 0.0 ? missing : 1.0;
+  }
+  return !(max(missing) > 0.0);
+}
+
 void Model::fieldSource(const std::string& field, double dt, double* source) const {
   std::fill(source, source + numOwned(), 0.0);
   forTerms(blocks_, field, [&](const BlockModel& b, const FieldOperator& op) {

@@ -126,13 +126,7 @@ void OutputManager::requireGlobal(const std::string& var, const std::string& whe
     throw InputError(inputFile_ + ": " + where + ": '" + var + "' needs a Contact list");
   if (var == "Global_Heat") {
     // Every point needs a heat capacity: a point without one would drop out of the sum silently.
-    double missing = model_.fields().has("Temperature") ? 0.0 : 1.0;
-    if (missing == 0.0) {
-      std::vector<double> c(static_cast<std::size_t>(model_.numOwned()));
-      model_.fieldCapacity("Temperature", c.data());
-      for (double x : c) missing = x > 0.0 ? missing : 1.0;
-    }
-    if (model_.max(missing) > 0.0)
+    if (!model_.capacityEverywhere("Temperature"))
       throw InputError(inputFile_ + ": " + where + ": 'Global_Heat' needs a heat capacity at every point: 'Density' "
                                                    "and 'Specific Heat Capacity' in every block's material");
     return;

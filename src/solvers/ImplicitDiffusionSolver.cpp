@@ -40,37 +40,26 @@ SolverEntry ImplicitDiffusionSolver::entry() {
           .oneOf({"Steady", "Backward Euler"}).byDefault("Steady"),
       S::flag("Verbose", "print the residual of every iteration").byDefault("false")};
   e.create = [](const ParameterValues& p, const ParamTree&) {
-    ImplicitDiffusionOptions o;
+    ImplicitFieldOptions o;
     o.relativeTolerance = p.get("Relative Tolerance");
     o.absoluteTolerance = p.get("Absolute Tolerance", 0.0);
     o.maxIterations = static_cast<int>(p.get("Maximum Solver Iterations"));
     o.verbose = p.flag("Verbose");
     o.transient = p.text("Time Integration") == "Backward Euler";
     o.where = p.where();
+    o.transientBy = "'Time Integration' = 'Backward Euler'";
     return std::unique_ptr<Solver>(new ImplicitDiffusionSolver(o));
   };
   return e;
 }
 
-ImplicitFieldOptions ImplicitDiffusionSolver::fieldOptions() const {
-  ImplicitFieldOptions f;
-  f.relativeTolerance = opt_.relativeTolerance;
-  f.absoluteTolerance = opt_.absoluteTolerance;
-  f.maxIterations = opt_.maxIterations;
-  f.transient = opt_.transient;
-  f.verbose = opt_.verbose;
-  f.where = opt_.where;
-  f.transientBy = "'Time Integration' = 'Backward Euler'";
-  return f;
-}
-
-void ImplicitDiffusionSolver::check(const Model& model) const { ImplicitFieldStep(model, kField, fieldOptions()); }
+void ImplicitDiffusionSolver::check(const Model& model) const { ImplicitFieldStep(model, kField, opt_); }
 
 void ImplicitDiffusionSolver::run(Model& model, std::vector<double>& u, std::vector<double>& v,
                                   const std::vector<double>& times, StepObserver& observer) {
   const SolverResume* resume = takeResume();
   model.fields().setSolved(kField);
-  ImplicitFieldStep heat(model, kField, fieldOptions());
+  ImplicitFieldStep heat(model, kField, opt_);
   std::vector<double> f(u.size(), 0.0);
   auto report = [&](int step, double t, int iterations, double residual, double tol, double wall) {
     StepReport r{step, t, iterations, residual, tol, wall, nullptr};

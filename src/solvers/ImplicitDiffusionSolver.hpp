@@ -15,18 +15,10 @@
 
 namespace pf {
 
-struct ImplicitDiffusionOptions {
-  double relativeTolerance = 1e-6;
-  double absoluteTolerance = 0.0;  // > 0: used instead of the relative rule (Peridigm's)
-  int maxIterations = 10;          // Newton iterations per load step
-  bool verbose = false;
-  bool transient = false;          // Time Integration = Backward Euler
-  std::string where;
-};
 
 class ImplicitDiffusionSolver : public Solver {
  public:
-  explicit ImplicitDiffusionSolver(ImplicitDiffusionOptions o) : opt_(std::move(o)) {}
+  explicit ImplicitDiffusionSolver(ImplicitFieldOptions o) : opt_(std::move(o)) {}
   static SolverEntry entry();  // "ImplicitDiffusion"
   std::string name() const override { return "ImplicitDiffusion (steady heat conduction)"; }
   void check(const Model& model) const override;
@@ -34,8 +26,7 @@ class ImplicitDiffusionSolver : public Solver {
            StepObserver& observer) override;
 
  private:
-  ImplicitDiffusionOptions opt_;
-  ImplicitFieldOptions fieldOptions() const;
+  ImplicitFieldOptions opt_;  // its load step's options (ImplicitFieldStep.hpp)
 };
 
 }  // namespace pf

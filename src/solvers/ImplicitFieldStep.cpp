@@ -29,12 +29,7 @@ ImplicitFieldStep::ImplicitFieldStep(const Model& model, std::string field, Impl
     throw InputError(opt_.where + ": no block conducts heat: give a block a material with conduction (Material Model "
                                   "'Diffusion', or a solid with 'Thermal Conductivity')");
   heats_ = model.hasFieldSource(field_);
-  if (!opt_.transient) return;
-  std::vector<double> c(static_cast<std::size_t>(model.numOwned()));
-  model.fieldCapacity(field_, c.data());
-  double none = 0.0;
-  for (double x : c) none = x > 0.0 ? none : 1.0;
-  if (model.max(none) > 0.0)
+  if (opt_.transient && !model.capacityEverywhere(field_))
     throw InputError(opt_.where + ": " + opt_.transientBy + " needs 'Density' and 'Specific Heat Capacity' in every "
                                   "block's material (a point without heat capacity)");
 }
