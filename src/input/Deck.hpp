@@ -207,6 +207,14 @@ struct RestartSpec {
   int frequency = 0;                  // after every step whose CSV step number is a multiple of it
 };
 
+// Peridigm's "Data Loader" list: a nodal scalar field read from an Exodus results file and imposed on every point at
+// every evaluated time, by linear interpolation between the file's output times (model/LoadedField.hpp).
+struct DataLoaderSpec {
+  bool given = false;                 // the deck has a Data Loader list
+  std::string file;                   // "File Name", resolved against the deck's directory
+  std::string field;                  // "Field Name": the file's nodal variable, also the run's field and output name
+};
+
 struct Deck {
   std::string file;                   // as given on the command line (error messages name it)
   std::string directory;              // relative file names in the deck resolve against it
@@ -224,6 +232,7 @@ struct Deck {
   std::vector<SolverSpec> solvers;    // run in sequence
   std::vector<OutputSpec> outputs;
   RestartSpec restart;
+  DataLoaderSpec dataLoader;
 
   const MaterialSpec& material(const std::string& name) const;
   const DamageModelSpec* damageModel(const std::string& name) const;  // null for "" (no damage model)

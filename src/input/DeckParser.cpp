@@ -33,7 +33,7 @@ std::vector<std::string> outputLists(const PL& p) {
 // Top-level sub-lists a deck may hold; Peridigm's numbered Solver<n>/Output<n> lists with n = 1, 2, ...
 std::vector<std::string> topLists(const PL& p, const std::string& file) {
   std::vector<std::string> tops = {"Discretization", "Materials", "Blocks", "Boundary Conditions", "Restart",
-                                    "Damage Models", "Compute Class Parameters", "Contact"};
+                                    "Damage Models", "Compute Class Parameters", "Contact", "Data Loader"};
   for (const std::string stem : {"Solver", "Output"}) {
     const std::vector<std::string> lists = stem == "Output" ? outputLists(p) : numberedLists(p, stem);
     tops.insert(tops.end(), lists.begin(), lists.end());
@@ -67,6 +67,7 @@ std::vector<OutputSpec> outputs(const PL& p, const Deck& deck, const std::set<st
   std::vector<OutputSpec> out;
   std::set<std::string> labels;
   for (const ComputeSpec& c : deck.computes) labels.insert(c.label);
+  if (deck.dataLoader.given) labels.insert(deck.dataLoader.field);
   std::map<std::string, std::size_t> files;  // Output Filename -> its list in out
   for (const std::string& n : outputLists(p)) {
     OutputSpec o = parseOutput(p.sublist(n), deck.file, n, nodeSets, deck.conditions, deck.hasDynamicSolver(), labels);
@@ -135,6 +136,8 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
   deck.contact = parseContact(p, deck.solvers, deck.blocks, file);
   if (p.isSublist("Compute Class Parameters"))
     deck.computes = parseComputes(p.sublist("Compute Class Parameters"), nodeSets, file);
+  if (p.isSublist("Data Loader"))
+    deck.dataLoader = parseDataLoader(p.sublist("Data Loader"), file, directory, deck.solvers);
   deck.outputs = outputs(p, deck, nodeSets);
   if (p.isSublist("Restart")) deck.restart = parseRestart(p.sublist("Restart"), file, deck.outputs);
   checkWrittenFiles(deck);

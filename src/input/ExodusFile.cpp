@@ -10,8 +10,9 @@
 
 namespace pf {
 
-ExodusFile::ExodusFile(const std::string& path, const std::string& inputFile, const std::string& parameter)
-    : path_(path), inputFile_(inputFile), parameter_(parameter) {
+ExodusFile::ExodusFile(const std::string& path, const std::string& inputFile, const std::string& parameter,
+                       const std::string& kind)
+    : path_(path), inputFile_(inputFile), parameter_(parameter), kind_(kind) {
   struct stat st;
   if (stat(path.c_str(), &st) != 0) fail("cannot open the file");
   ex_opts(0);  // errors come back as return codes and become one InputError; the library prints nothing
@@ -68,7 +69,7 @@ void ExodusFile::check(int status, const char* call) const {
 }
 
 void ExodusFile::fail(const std::string& msg) const {
-  throw InputError(inputFile_ + ": " + parameter_ + ": mesh file '" + path_ + "': " + msg);
+  throw InputError(inputFile_ + ": " + parameter_ + ": " + kind_ + " '" + path_ + "': " + msg);
 }
 
 }  // namespace pf

@@ -2,7 +2,7 @@
 // An Exodus II genesis file opened for reading, and its summary (element blocks, node sets): what the deck
 // parser needs to know the mesh's node-set names and what the discretization needs to read its share of the
 // elements. Every failure (missing or unreadable file, a call that fails) is an InputError naming the deck,
-// "Discretization/Input Mesh File" and the mesh file.
+// "Discretization/Input Mesh File" (or the parameter given) and the file.
 #include <string>
 #include <vector>
 
@@ -30,10 +30,10 @@ struct ExodusSummary {
 
 class ExodusFile {
  public:
-  // inputFile: the deck (for messages); path: the resolved mesh file name; parameter: the deck parameter that
-  // names it (for messages).
+  // inputFile: the deck (for messages); path: the resolved file name; parameter: the deck parameter that
+  // names it and kind: what the file is (both for messages).
   ExodusFile(const std::string& path, const std::string& inputFile,
-             const std::string& parameter = "Discretization/Input Mesh File");
+             const std::string& parameter = "Discretization/Input Mesh File", const std::string& kind = "mesh file");
   ~ExodusFile();
   ExodusFile(const ExodusFile&) = delete;
   ExodusFile& operator=(const ExodusFile&) = delete;
@@ -42,10 +42,10 @@ class ExodusFile {
   int id() const { return exoid_; }
   // An ExodusII return code: negative is an error (an InputError saying which call on which file).
   void check(int status, const char* call) const;
-  [[noreturn]] void fail(const std::string& msg) const;  // "deck: <parameter>: mesh file 'path': msg"
+  [[noreturn]] void fail(const std::string& msg) const;  // "deck: <parameter>: <kind> 'path': msg"
 
  private:
-  std::string path_, inputFile_, parameter_;
+  std::string path_, inputFile_, parameter_, kind_;
   int exoid_ = -1;
   ExodusSummary summary_;
 };

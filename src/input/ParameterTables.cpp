@@ -61,6 +61,7 @@ std::vector<ParameterTable> parameterTables() {
       {"output", "Output (or Output1, Output2, ..., or any list whose name contains Output)", outputSpecs()},
       {"probe", "Output/Probes/<any name>", probeSpecs()},
       {"restart", "Restart", restartSpecs()},
+      {"data-loader", "Data Loader", dataLoaderSpecs()},
       {"compute", "Compute Class Parameters/<any name>", computeSpecs()}};
   const std::size_t common = discretizationSpecs("").size();
   for (auto& [key, type] : std::vector<std::pair<std::string, std::string>>{

@@ -72,7 +72,8 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
 // Output lists. conditions: for "Applied Displacement"; dynamic: a dynamic solver runs (Acceleration).
 std::vector<ParameterSpec> outputSpecs();
 std::vector<ParameterSpec> probeSpecs();
-// computeLabels: the Output Labels of the deck's compute classes, which Output Variables may name.
+// computeLabels: names besides the known variables that Output Variables may name: the Output Labels of the deck's
+// compute classes and the Data Loader's field.
 OutputSpec parseOutput(const PL& o, const std::string& file, const std::string& listName,
                        const std::set<std::string>& nodeSets, const std::vector<ConditionSpec>& conditions,
                        bool dynamic, const std::set<std::string>& computeLabels = {});
@@ -83,6 +84,11 @@ const std::vector<std::string>& knownOutputVariables();
 // Peridigm's "Compute Class Parameters" (before the output lists, which may name their Output Labels).
 std::vector<ParameterSpec> computeSpecs();
 std::vector<ComputeSpec> parseComputes(const PL& list, const std::set<std::string>& nodeSets, const std::string& file);
+
+// Data Loader (after the solvers, whose times its file must cover; before the output lists, which may name its field).
+std::vector<ParameterSpec> dataLoaderSpecs();
+DataLoaderSpec parseDataLoader(const PL& d, const std::string& file, const std::string& dir,
+                               const std::vector<SolverSpec>& solvers);
 
 // Restart (after the output lists: its default file name is the first one's).
 std::vector<ParameterSpec> restartSpecs();

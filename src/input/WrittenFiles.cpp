@@ -52,6 +52,7 @@ void checkWrittenFiles(const Deck& deck) {
   };
   read(deck.file, "the input deck");
   read(deck.discretization.meshFile, "the mesh file");
+  if (deck.dataLoader.given) read(deck.dataLoader.file, "the Data Loader's file");
   for (const NodeSetSpec& s : deck.nodeSets)
     if (s.kind == NodeSetSpec::Kind::File) read(s.text, "node set '" + s.name + "''s file");
   for (const OutputSpec& o : deck.outputs) {

@@ -65,11 +65,18 @@ void FieldSet::addPrescribed(const std::string& name, NodalLoad load) {
   f.prescribed.push_back(std::move(load));
 }
 
+void FieldSet::setSource(const std::string& name, std::shared_ptr<FieldSource> source) {
+  Field& f = get(name);
+  std::fill(f.mask.begin(), f.mask.end(), 1);
+  f.source = std::move(source);
+}
+
 void FieldSet::start(double t0, const std::vector<double>& x, StateStore& state) {
   for (Field& f : fields_) {
     double* v = state.trial(f.name);
     for (const NodalLoad& l : f.initial) forEachLoadValue(l, x, t0, 1, [v](int k, double val) { v[k] = val; });
     for (const NodalLoad& l : f.prescribed) forEachLoadValue(l, x, t0, 1, [v](int k, double val) { v[k] = val; });
+    if (f.source) f.source->valuesAt(t0, v);
     const std::size_t n = f.mask.size();
     std::copy(v, v + n, state.restoreCommitted(f.name));
     std::copy(v, v + n, state.trial(startOf(f.name)));
@@ -87,6 +94,7 @@ void FieldSet::impose(double t, const std::vector<double>& x, StateStore& state,
     // A history field's trial copy is stale after a commit (StateStore::commit): rewrite it from the committed one.
     if (!f.solved) std::copy(state.committed(f.name), state.committed(f.name) + n, v);
     for (const NodalLoad& l : f.prescribed) forEachLoadValue(l, x, t, 1, [v](int k, double val) { v[k] = val; });
+    if (f.source) f.source->valuesAt(t, v);
     const double* t0 = state.committed(startOf(f.name));
     std::copy(t0, t0 + n, state.trial(startOf(f.name)));
     double* change = state.trial(changeOf(f.name));

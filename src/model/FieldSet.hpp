@@ -6,11 +6,13 @@
 // the committed ones with t's prescribed conditions imposed, or, for a field a solver advances, the solver's own
 // trial values with the prescribed ones imposed. The ghosted `<name>_Change` and `<name>` are what materials read
 // (core/FieldValues.hpp).
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "core/FieldValues.hpp"
 #include "core/StateStore.hpp"
+#include "model/FieldSource.hpp"
 #include "model/FieldSurface.hpp"
 #include "model/NodalLoad.hpp"
 
@@ -33,6 +35,9 @@ class FieldSet {
   const std::string& rateName(const std::string& name) const { return get(name).rate; }
   void addInitial(const std::string& name, NodalLoad load);
   void addPrescribed(const std::string& name, NodalLoad load);
+  // The field's values at every node come from `source` (model/FieldSource.hpp), imposed after its prescribed
+  // conditions wherever those are.
+  void setSource(const std::string& name, std::shared_ptr<FieldSource> source);
   // A solver advances the field: impose() keeps its trial values except at prescribed nodes.
   void setSolved(const std::string& name) { get(name).solved = true; }
   // A solver wrote new trial values of the field: its trial `<name>_Change` (owned nodes) follows them. The ghosts
@@ -66,6 +71,7 @@ class FieldSet {
     FieldSurface surface;
     std::string rate;  // its rate's output name, or empty
     std::vector<char> mask;
+    std::shared_ptr<FieldSource> source;  // null: none
     bool solved = false;
     std::vector<double> owned, overlap, changeOverlap;  // staging and the ghosted values
   };

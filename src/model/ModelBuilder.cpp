@@ -14,6 +14,7 @@
 #include "core/MaterialEntry.hpp"
 #include "discretization/NodeSets.hpp"
 #include "model/DistributedCloud.hpp"
+#include "model/LoadedField.hpp"
 #include "model/PressureLoad.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/Partition.hpp"
@@ -372,6 +373,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
                                pb.model->layout().family().numBonds());
   }
   addConditions(deck, pb, localOf, cloud.spacing);
+  addLoadedField(deck, *pb.model, inputFile);
   pb.model->requireFieldsRead(inputFile);
   addRigidWalls(deck, pb, localOf);
   std::map<int, double> horizonOf;
