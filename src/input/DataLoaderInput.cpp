@@ -13,7 +13,7 @@ namespace pf {
 std::vector<ParameterSpec> dataLoaderSpecs() {
   using S = ParameterSpec;
   return {S::text("File Name", "the Exodus II file holding the field as a nodal variable, one node per point in the "
-                               "points' order (Peridigm's output of the same mesh); read whole at any number of ranks")
+                               "points' order (Peridigm's output of the same mesh); the one serial file at any number of ranks")
               .need(),
           S::text("Field Name", "the file's nodal variable; the run holds it as a field of that name, imposed at every "
                                 "evaluated time by linear interpolation between the file's two output times around it, "

@@ -200,7 +200,9 @@ set(peridigm_suite_cases
   # Peridigm's Linear LPS beside Elastic Partial Volume (= Elastic without element-horizon volumes, docs/materials.md)
   "LinearLPSBar LinearLPSBar.yaml LinearLPSBar LinearLPSBar.comp"
   # Peridigm's QuasiStatic 'Adaptive Load-Stepping': both steps fail, the run switches to Verlet (docs/peridigm.md)
-  "AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.xml AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.comp")
+  "AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.xml AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.comp"
+  # Peridigm's Data Loader: Fluid_Concentration read from an Exodus file, interpolated linearly in time (model/LoadedField)
+  "Notched_Plate_Data_Loader Notched_Plate_Data_Loader.yaml Notched_Plate_Data_Loader Notched_Plate_Data_Loader.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 2)
