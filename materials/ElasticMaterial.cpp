@@ -19,9 +19,13 @@ std::vector<std::string> ElasticMaterial::fieldsRead() const {
 }
 
 MaterialEntry ElasticMaterial::entry() {
-  MaterialEntry e{"Elastic", "linear ordinary state-based solid", withThermalExpansion(elasticSolidParameters()),
+  std::vector<ParameterSpec> params = withThermalExpansion(elasticSolidParameters());
+  // Peridigm's Elastic reads no such parameter and so ignores it; its Interfaces suite deck gives one (0).
+  params.push_back(ParameterSpec::real("Hourglass Coefficient", "accepted, ignored (Peridigm's Elastic has no hourglass "
+                                                                "force; the correspondence models do)"));
+  MaterialEntry e{"Elastic", "linear ordinary state-based solid", params,
                   [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticMaterial(in)); },
-                  {"Dilatation", "Stored_Elastic_Energy"}};
+                  {"Dilatation", "Stored_Elastic_Energy", "Stored_Elastic_Energy_Density"}};
   e.createOperators = [](const MaterialInput& in) {
     double thickness = 0.0;
     const Dimension dim = dimensionFrom(in, &thickness);
@@ -41,12 +45,17 @@ MaterialEntry ElasticMaterial::partialVolumeEntry() {
 std::vector<StateSpec> ElasticMaterial::stateSpecs() const {
   std::vector<StateSpec> s = {{"Dilatation", Location::Node, false, true}};
   // Peridigm defines the stored energy of its (3D) Elastic model only.
-  if (dim_ == Dimension::ThreeD) s.push_back({"Stored_Elastic_Energy", Location::Node, false, true});
+  if (dim_ == Dimension::ThreeD) {
+    s.push_back({"Stored_Elastic_Energy", Location::Node, false, true});
+    // Peridigm's compute class of that name: W_i itself, the energy per volume (Stored_Elastic_Energy is V_i W_i).
+    s.push_back({"Stored_Elastic_Energy_Density", Location::Node, false, true});
+  }
   return s;
 }
 
 void ElasticMaterial::enableOutput(const std::string& name) const {
   if (name == "Stored_Elastic_Energy") energyWanted_ = true;
+  if (name == "Stored_Elastic_Energy_Density") energyWanted_ = densityWanted_ = true;
 }
 
 void ElasticMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
@@ -63,6 +72,11 @@ void ElasticMaterial::computeForce(const FamilyView& fam, const double* y, State
     osbElasticEnergy(fam, moduli_, y, theta, state.trial("Stored_Elastic_Energy"), nullptr, nullptr,
                      thermalCoefficient_,
                      thermalCoefficient_ != 0.0 ? fam.fields->find("Temperature_Change") : nullptr);
+  if (densityWanted_) {
+    const double* energy = state.trial("Stored_Elastic_Energy");
+    double* density = state.trial("Stored_Elastic_Energy_Density");
+    for (int i = fam.begin; i < fam.end; ++i) density[i] = energy[i] / fam.volume[i];
+  }
 }
 
 void ElasticMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {

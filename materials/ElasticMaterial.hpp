@@ -46,6 +46,7 @@ class ElasticMaterial : public Material {
   // Thermal Expansion Coefficient times the plane-strain factor (materials/OsbThermalKernels.hpp); 0: none.
   double thermalCoefficient_ = 0.0;
   mutable bool energyWanted_ = false;  // set by enableOutput("Stored_Elastic_Energy") before the run
+  mutable bool densityWanted_ = false;  // enableOutput("Stored_Elastic_Energy_Density"): W_i = energy / V_i as well
 };
 
 }  // namespace pf

@@ -246,17 +246,24 @@ class ExoFile:
         self.block_ids = list(ds.variables["eb_prop1"][:]) if nblk else []
         self.elem_node = []
         self.elem_block = []    # (block index, index in block)
+        # Every block's element type and connectivity (0-based nodes; none for an empty block). A file of one-node
+        # (SPHERE) elements only pairs elements by their node, as points; any other is compared as SEACAS exodiff
+        # compares meshes: the same blocks, their elements in the same order on the same (matched) nodes.
+        self.blocks = []
         for b in range(nblk):
             conn = ds.variables.get("connect%d" % (b + 1))
             if conn is None:
+                self.blocks.append(("", np.zeros((0, 0), dtype=int)))
                 continue
-            c = np.asarray(conn[:])
-            if c.ndim != 2 or c.shape[1] != 1:
-                raise UsageError("%s: block %d is not one-node (SPHERE) elements; not supported"
-                                 % (path, self.block_ids[b]))
-            for i, n in enumerate(c[:, 0]):
-                self.elem_node.append(int(n) - 1)
-                self.elem_block.append((b, i))
+            c = np.asarray(conn[:]).astype(int) - 1
+            kind = conn.getncattr("elem_type") if "elem_type" in conn.ncattrs() else ""
+            self.blocks.append((str(kind).upper(), c))
+        self.spheres = all(c.ndim == 2 and c.shape[1] == 1 for _, c in self.blocks if c.size)
+        if self.spheres:
+            for b, (_, c) in enumerate(self.blocks):
+                for i, n in enumerate(c[:, 0] if c.size else []):
+                    self.elem_node.append(int(n))
+                    self.elem_block.append((b, i))
         self.elem_node = np.asarray(self.elem_node, dtype=int)
         self.num_blocks = nblk
 
@@ -320,6 +327,23 @@ def match_nodes(a, b, tol):
     return perm, None
 
 
+def mesh_difference(a, b, perm):
+    """SEACAS exodiff's Check_Elmt_Block for files with elements of several nodes: the same block ids in order, each
+    with the same element type, count and nodes per element, and the same connectivity element by element (a's nodes
+    through the coordinate matching perm). Returns the first difference, or None."""
+    if list(a.block_ids) != list(b.block_ids):
+        return "element block ids differ (%s vs %s)" % (list(a.block_ids), list(b.block_ids))
+    for bid, (ta, ca), (tb, cb) in zip(b.block_ids, a.blocks, b.blocks):
+        if ca.shape != cb.shape:
+            return "block %d: %s elements vs %s" % (bid, ca.shape, cb.shape)
+        if ta != tb:
+            return "block %d: element types differ (%s vs %s)" % (bid, ta, tb)
+        if ca.size and not np.array_equal(perm[ca], cb):
+            e = int(np.nonzero(np.any(perm[ca] != cb, axis=1))[0][0])
+            return "block %d: connectivities differ, first at element %d" % (bid, e + 1)
+    return None
+
+
 # ---------------------------------------------------------------- comparison
 
 def compare(result_path, gold_path, comp_path=None, out=sys.stdout):
@@ -348,7 +372,13 @@ def compare(result_path, gold_path, comp_path=None, out=sys.stdout):
 
     # Elements: element of result node i <-> element of gold node perm[i].
     eperm = None
-    if perm is not None and (a.elem_names or b.elem_names):
+    if perm is not None and not (a.spheres and b.spheres):
+        why = mesh_difference(a, b, perm)
+        if why:
+            failures.append(why)
+        else:
+            eperm = np.arange(sum(len(c) for _, c in b.blocks))
+    elif perm is not None and (a.elem_names or b.elem_names):
         if len(a.elem_node) != len(b.elem_node):
             failures.append("element counts differ (%d vs %d)" % (len(a.elem_node), len(b.elem_node)))
         else:
@@ -499,6 +529,21 @@ def self_test():
         with open(bad_comp, "w") as f:
             f.write("NODAL VARIABLES absolute 1e-9\n\tNoSuchVariable\n")
         run("listed variable missing fails", 1, gold, gold, bad_comp)
+        # A mesh of QUAD4/TRI3 blocks (Peridigm's interface file): compared as SEACAS compares meshes.
+        faces = os.path.join(os.path.dirname(ref), "peridigm-suite", "Interfaces", "Interfaces_gold.e")
+        if os.path.exists(faces):
+            run("interface mesh gold vs gold", 0, faces, faces)
+            swapped = os.path.join(tmp, "swapped.e")
+            shutil.copy(faces, swapped)
+            with netCDF4.Dataset(swapped, "a") as d:
+                c = d.variables["connect1"][:]
+                d.variables["connect1"][:] = c[[1, 0] + list(range(2, len(c)))]
+            run("interface mesh with two quads swapped fails", 1, swapped, faces)
+            aperture = os.path.join(tmp, "aperture.e")
+            shutil.copy(faces, aperture)
+            with netCDF4.Dataset(aperture, "a") as d:
+                d.variables["vals_elem_var1eb2"][1, 5] = 1e-3
+            run("interface aperture changed fails", 1, aperture, faces)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     print("self-test: %s" % ("PASS" if all(results) else "FAIL"))

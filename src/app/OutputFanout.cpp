@@ -10,6 +10,7 @@ namespace pf {
 void OutputFanout::onStep(const StepReport& r, const std::vector<double>& u, const std::vector<double>& v,
                           const std::vector<double>& f) {
   for (auto& m : managers) m->onStep(r, u, v, f);
+  if (interfaces && !managers.empty() && managers.front()->wroteExodusStep()) interfaces->write(r.time, u);
   if (checkpointer) checkpointer->onStep(r, u, v, f);
   // After the step is written: what was converged is kept. All ranks agree (a signal may reach one rank,
   // or the ranks at different steps), so all stop here together.

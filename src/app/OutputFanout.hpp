@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "output/InterfaceOutput.hpp"
 #include "output/OutputManager.hpp"
 #include "parallel/Communicator.hpp"
 
@@ -14,6 +15,7 @@ class OutputFanout : public StepObserver {
  public:
   explicit OutputFanout(const Communicator& comm) : comm_(comm) {}
   std::vector<std::unique_ptr<OutputManager>> managers;
+  InterfaceOutput* interfaces = nullptr;  // or null; writes with the first manager's Exodus steps
   StepObserver* checkpointer = nullptr;  // or null; called after the managers, so a checkpoint holds the step's output
   void onStep(const StepReport& r, const std::vector<double>& u, const std::vector<double>& v,
               const std::vector<double>& f) override;

@@ -153,8 +153,11 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
   }
   OutputFanout output(comm);
   std::unique_ptr<Checkpointer> checkpointer;  // or null: no Restart list; the fanout calls it after each step
+  std::unique_ptr<InterfaceOutput> interfaces;  // or null: no Construct Interfaces
   try {
     for (const OutputSpec& o : deck.outputs) output.managers.push_back(std::make_unique<OutputManager>(o, deck, problem));
+    if (deck.discretization.constructInterfaces) interfaces = std::make_unique<InterfaceOutput>(deck, model, inputFile);
+    output.interfaces = interfaces.get();
     if (from)
       for (const auto& m : output.managers) m->resumeFrom(restart);
     restart = CheckpointData();  // the copies of the output files are on disk again

@@ -45,6 +45,7 @@ struct DiscretizationSpec {
   std::vector<std::string> meshNodeSets;
   long long meshElements = 0;
   std::vector<std::pair<std::string, int>> meshBlockNames;
+  bool constructInterfaces = false;  // Exodus: Peridigm's "Construct Interfaces" (output/InterfaceOutput.hpp)
   // Rectangle / Box With Holes (origin and length above; z unused for the rectangle).
   double spacing = 0.0;
   bool gridNodes = false;           // "Grid" = "Nodes" (else cell centres)

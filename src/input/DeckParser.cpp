@@ -140,6 +140,8 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
     deck.dataLoader = parseDataLoader(p.sublist("Data Loader"), file, directory, deck.solvers);
   deck.outputs = outputs(p, deck, nodeSets);
   if (p.isSublist("Restart")) deck.restart = parseRestart(p.sublist("Restart"), file, deck.outputs);
+  if (deck.restart.given && deck.discretization.constructInterfaces)  // the checkpoint does not carry its file
+    fail(file, "Restart", "a restart cannot continue 'Discretization/Construct Interfaces''s file: give one or the other");
   checkWrittenFiles(deck);
   return deck;
 }

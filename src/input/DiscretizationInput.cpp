@@ -106,6 +106,11 @@ std::vector<ParameterSpec> discretizationSpecs(const std::string& type) {
                                            "of the physical groups of that dimension (a physical name is an alias); "
                                            "a lower-dimension physical group is a node set, by its physical name or "
                                            "`nodelist_<tag>`").need());
+  if (type == "Exodus")
+    s.push_back(S::flag("Construct Interfaces", "Peridigm's: write `Interfaces.e` in the working directory, one QUAD4 "
+                                                "or TRI3 element per face two bonded elements share (HEX8 and TET4 "
+                                                "meshes), with their `interface_aperture` at each output of the "
+                                                "first output list").byDefault("false"));
   if (type == "Exodus" || type == "Gmsh")
     s.push_back(S::real("Thickness", "out-of-plane thickness of a mesh of 2D elements (QUAD, TRI): volume = area·"
                                      "Thickness").positive());
@@ -234,6 +239,7 @@ DiscretizationSpec parseDiscretization(const PL& d, const std::string& file, con
     s.type = type == "Exodus" ? DiscretizationSpec::Type::Exodus : DiscretizationSpec::Type::Gmsh;
     s.meshFile = resolvePath(v.text("Input Mesh File"), dir);
     s.thickness = v.get("Thickness", 0.0);
+    s.constructInterfaces = s.type == DiscretizationSpec::Type::Exodus && v.flag("Construct Interfaces");
     readMeshNames(s, file, path);
   } else {
     s.type = type == "Box With Holes" ? DiscretizationSpec::Type::BoxWithHoles

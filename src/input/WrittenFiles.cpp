@@ -55,6 +55,8 @@ void checkWrittenFiles(const Deck& deck) {
   if (deck.dataLoader.given) read(deck.dataLoader.file, "the Data Loader's file");
   for (const NodeSetSpec& s : deck.nodeSets)
     if (s.kind == NodeSetSpec::Kind::File) read(s.text, "node set '" + s.name + "''s file");
+  if (deck.discretization.constructInterfaces)  // Peridigm's fixed name, in the working directory
+    claim("Interfaces.e", "Construct Interfaces' file", "Discretization", "Construct Interfaces");
   for (const OutputSpec& o : deck.outputs) {
     requireFileBase(o.filename, deck.file, o.listName, "Output Filename");
     std::vector<std::string> suffixes = {".csv", ".csv.part", ".lock", ".status"};

@@ -238,6 +238,7 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
   nonlinearIterations_ += report.nonlinearIterations;  // every step counts, written or not
   lastStep_ = count_ - 1;
   lastTime_ = report.time;
+  wroteExodus_ = false;
   const long every = static_cast<long>(report.outputEvery > 0 ? report.outputEvery : frequency_) * report.outputEveryFactor;
   if (count_ < first_ || (last_ > 0 && count_ > last_ + 1) || (count_ - 1) % every != 0) return;
   const std::vector<double> global = historyRow(report, u, v, f);
@@ -249,6 +250,7 @@ void OutputManager::onStep(const StepReport& report, const std::vector<double>& 
     if (!std::isfinite(row[k])) throw nonFinite(historyColumns()[k], "history column", row[k]);
   onRoot([&] { history_->writeRow(row); });
   if (exodus_) writeExodusStep(report.time, u, v, f);
+  wroteExodus_ = exodus_;
 }
 
 // Collective: reactions and probes reduced over ranks; fills bodyForce_ at the step's time first (a probe lives on one rank, others add 0).

@@ -43,6 +43,8 @@ class OutputManager : public StepObserver {
   void onStep(const StepReport& report, const std::vector<double>& u, const std::vector<double>& v,
               const std::vector<double>& f) override;
   // Collective: the run ended well; the parts become <name>.e / <name>.csv.
+  // Whether the last onStep wrote a step to the Exodus file (its companions, the interface file, write with it).
+  bool wroteExodusStep() const { return wroteExodus_; }
   void finish();
   // The run failed or was stopped (verb: "failed", "interrupted"): <name>.status says so, the parts stay.
   // Not collective (every rank may call it; rank 0 writes).
@@ -104,6 +106,7 @@ class OutputManager : public StepObserver {
   long count_ = 0;             // steps reported so far, over all solvers
   long nonlinearIterations_ = 0;  // Nonlinear_Solver_Iterations: StepReport::nonlinearIterations summed over them
   bool exodus_ = false;
+  bool wroteExodus_ = false;
   std::string exodusName_, historyName_, baseName_, where_;
   long lastStep_ = -1;     // the CSV step of the last reported step (-1: none yet), and its time
   double lastTime_ = 0.0;

@@ -202,7 +202,9 @@ set(peridigm_suite_cases
   # Peridigm's QuasiStatic 'Adaptive Load-Stepping': both steps fail, the run switches to Verlet (docs/peridigm.md)
   "AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.xml AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.comp"
   # Peridigm's Data Loader: Fluid_Concentration read from an Exodus file, interpolated linearly in time (model/LoadedField)
-  "Notched_Plate_Data_Loader Notched_Plate_Data_Loader.yaml Notched_Plate_Data_Loader Notched_Plate_Data_Loader.comp")
+  "Notched_Plate_Data_Loader Notched_Plate_Data_Loader.yaml Notched_Plate_Data_Loader Notched_Plate_Data_Loader.comp"
+  # Peridigm's Construct Interfaces: its Interfaces.e (face elements between bonded elements, output/InterfaceOutput)
+  "Interfaces Interfaces.xml Interfaces Interfaces.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 2)
