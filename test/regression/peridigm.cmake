@@ -226,3 +226,11 @@ foreach(np 2)
     ${PY} ${PROJECT_SOURCE_DIR}/scripts/conjoin.py --exodiff ${PERIDIGM_SUITE}/${mf}/${mf}_gold.e
     ${PERIDIGM_SUITE}/${mf}/${mf}.comp ${mf_dir}/${mf}.e ${mf_dir}/${mf}_QS.e ${mf_dir}/${mf}_Explicit.e)
 endforeach()
+
+# Construct Interfaces' interface_aperture against its closed form under a uniform stretch, lagged one output as
+# Peridigm writes it (Peridigm's Interfaces deck and mesh; the suite's gold has zeros only), np 2.
+periforge_shared_guard(ifguard ${PERIDIGM_SUITE}/Interfaces/Interfaces.g)
+add_test(NAME interfaces_aperture_np2 COMMAND ${ifguard} ${PY} ${REG}/interfaces/check_aperture.py
+  ${REG}/interfaces/stretch.xml ${PERIDIGM_SUITE}/Interfaces/Interfaces.g ${PERIFORGE_EXE} 2 ${MPIRUN})
+set_tests_properties(interfaces_aperture_np2 PROPERTIES LABELS "regression" PROCESSORS 2)
+periforge_mark_shared(interfaces_aperture_np2 "${ifguard}")
