@@ -231,6 +231,6 @@ endforeach()
 # Peridigm writes it (Peridigm's Interfaces deck and mesh; the suite's gold has zeros only), np 2.
 periforge_shared_guard(ifguard ${PERIDIGM_SUITE}/Interfaces/Interfaces.g)
 add_test(NAME interfaces_aperture_np2 COMMAND ${ifguard} ${PY} ${REG}/interfaces/check_aperture.py
-  ${REG}/interfaces/stretch.xml ${PERIDIGM_SUITE}/Interfaces/Interfaces.g ${PERIFORGE_EXE} 2 ${MPIRUN})
+  ${REG}/interfaces/stretch.xml.in ${PERIDIGM_SUITE}/Interfaces/Interfaces.g ${PERIFORGE_EXE} 2 ${MPIRUN})
 set_tests_properties(interfaces_aperture_np2 PROPERTIES LABELS "regression" PROCESSORS 2)
 periforge_mark_shared(interfaces_aperture_np2 "${ifguard}")
