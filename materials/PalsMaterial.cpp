@@ -141,17 +141,17 @@ void PalsMaterial::computeForce(const FamilyView& fam, const double* y, StateSto
       len[k] = std::sqrt(dx * dx + dy * dy + dz * dz);
       e[k] = len[k] - r.xi;
       intact[k] = 1.0;
-      if (fam.brokenN && breakBond(fam, b, len[k])) {  // a broken bond leaves every sum
+      const double V = neighbourVolume(fam, b);
+      const double xi2 = r.z[0] * r.z[0] + r.z[1] * r.z[1] + r.z[2] * r.z[2];
+      m += sg[k] * xi2 * V;  // the weighted volume keeps its reference value (as Peridigm's m, docs/input.md)
+      if (fam.brokenN && breakBond(fam, b, len[k])) {  // a broken bond leaves every other sum
         intact[k] = 0.0;
         broken += 1.0;
         continue;
       }
-      const double V = neighbourVolume(fam, b);
-      const double xi2 = r.z[0] * r.z[0] + r.z[1] * r.z[1] + r.z[2] * r.z[2];
       const double omega_x = om[k] * r.xi, sigma_x = sg[k] * r.xi;
       th += omega_x * e[k] * V;
       p += -(TWO_MU * sigma_x / 3.0) * e[k] * V;
-      m += sg[k] * xi2 * V;
     }
     if (fam.brokenN) finishNode(fam, i, n, broken);
     p += (K + TWO_MU * m / 9.0) * th;

@@ -6,7 +6,8 @@
 //   p = (K + 2 mu m / 9) theta - (2 mu / 3) sum_j sigma |z| e V_j,
 //   t = p omega |z| + 2 mu sigma (e - theta |z| / 3),   f_i += t Y/|Y| V_j,  f_j -= t Y/|Y| V_i,
 //   W = K theta^2 / 2 + mu sum_j sigma (e - theta |z| / 3)^2 V_j  (Stored_Elastic_Energy_Density).
-// A broken bond (Critical Stretch damage) leaves every sum, where Peridigm's model ignores bond damage.
+// A broken bond (Critical Stretch damage) carries no force and leaves theta, p and W (m keeps its reference value), where
+// Peridigm's model ignores bond damage.
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
 #include "core/ElasticModuli.hpp"

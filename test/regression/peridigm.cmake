@@ -222,3 +222,18 @@ foreach(np 2)
     ${PY} ${PROJECT_SOURCE_DIR}/scripts/conjoin.py --exodiff ${PERIDIGM_SUITE}/${mf}/${mf}_gold.e
     ${PERIDIGM_SUITE}/${mf}/${mf}.comp ${mf_dir}/${mf}.e ${mf_dir}/${mf}_QS.e ${mf_dir}/${mf}_Explicit.e)
 endforeach()
+
+# Peridigm's Interface Aware damage decks (Pals material, fully prescribed, Damage compared): passing since Interface
+# Aware with one value on every block is Critical Stretch's rule (docs/input.md, "Damage"). Their mesh is
+# ../mesh*.csv, beside the case's folder: Peridigm runs them from np1/ of the case, and so does scripts/peridigm_suite,
+# which runs and compares each here (exit 1 unless the case passes).
+foreach(case InterfaceAwareDamageModel__InterfaceAwareDamageModelOneBlock
+             InterfaceAwareDamageModel__InterfaceAwareDamageModelTwoBlocksSameValues
+             InterfaceAwareDamageModel__InterfaceAwareDamageModelTwoBlocksDifferentValues)
+  set(name peridigm_suite_${case}_np2)
+  periforge_shared_guard(guard ${PERIDIGM_SUITE})
+  add_test(NAME ${name} COMMAND ${guard} ${PY} ${PROJECT_SOURCE_DIR}/scripts/peridigm_suite --suite ${PERIDIGM_SUITE}
+    --exe ${PERIFORGE_EXE} --np 2 --only ${case} --work ${CMAKE_CURRENT_BINARY_DIR}/regression/${name} --expect-pass 1)
+  set_tests_properties(${name} PROPERTIES LABELS "regression" PROCESSORS 2)
+  periforge_mark_shared(${name} "${guard}")
+endforeach()
