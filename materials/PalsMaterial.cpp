@@ -16,6 +16,8 @@ namespace {
 using pals::kModes;
 const char* const kNormDil = "Dilatation_Normalization";
 const char* const kNormDev = "Deviatoric_Normalization";
+const char* const kOmega = "Pals_Omega";
+const char* const kSigma = "Pals_Sigma";
 
 std::string multiplierName(bool dilatation, int k) {
   return std::string(dilatation ? "Lagrange_Multiplier_Dilatation_" : "Lagrange_Multiplier_Deviatoric_") +
@@ -105,6 +107,9 @@ std::vector<StateSpec> PalsMaterial::stateSpecs() const {
                               {kNormDev, Location::Node, false, true}};
   for (int dil = 1; dil >= 0; --dil)
     for (int k = 0; k < kModes; ++k) s.push_back({multiplierName(dil == 1, k), Location::Node, false, true});
+  // omega and sigma of each bond, kept from the node's first evaluation (the derivative reads them per product)
+  s.push_back({kOmega, Location::Bond, false, false});
+  s.push_back({kSigma, Location::Bond, false, false});
   return s;
 }
 
@@ -117,20 +122,22 @@ void PalsMaterial::computeForce(const FamilyView& fam, const double* y, StateSto
   double* normDev = state.trial(kNormDev);
   double* theta = state.trial("Dilatation");
   double* energy = state.trial("Stored_Elastic_Energy_Density");
-  std::vector<double> om, sg, e, len, intact;
+  double* omega = state.trial(kOmega);
+  double* sigma = state.trial(kSigma);
+  std::vector<double> e, len, intact;
   for (int i = fam.begin; i < fam.end; ++i) {
     const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-    pals::Multipliers mult;
-    // The multipliers depend on the reference family only: solved at a node's first evaluation (after a
-    // restart again; Peridigm's normalising constants are 1, as here).
+    // The multipliers and influences depend on the reference family only: set at a node's first evaluation (after
+    // a restart again; Peridigm's normalising constants are 1, as here).
     if (normDev[i] == 0.0) {
-      mult = multipliersOf(fam, i, omega0_, sigma0_);
+      const pals::Multipliers mult = multipliersOf(fam, i, omega0_, sigma0_);
       for (int k = 0; k < kModes; ++k) lam[k][i] = mult.dilatation[k], tau[k][i] = mult.deviatoric[k];
+      influencesOf(fam, i, mult, omega0_, sigma0_, omega + b0, sigma + b0);
       normDil[i] = normDev[i] = 1.0;
     }
-    for (int k = 0; k < kModes; ++k) mult.dilatation[k] = lam[k][i], mult.deviatoric[k] = tau[k][i];
-    om.resize(n), sg.resize(n), e.resize(n), len.resize(n), intact.resize(n);
-    influencesOf(fam, i, mult, omega0_, sigma0_, om.data(), sg.data());
+    const double* om = omega + b0;
+    const double* sg = sigma + b0;
+    e.resize(n), len.resize(n), intact.resize(n);
     const double* Y = y + 3 * i;
     double th = 0.0, p = 0.0, m = 0.0, broken = 0.0;
     for (int k = 0; k < n; ++k) {
@@ -179,6 +186,64 @@ void PalsMaterial::computeForce(const FamilyView& fam, const double* y, StateSto
   }
 }
 
+// d(t n) along dy, per bond: de = n . (dy_j - dy_i), dtheta = sum omega |z| de V, dp = (K + 2 mu m/9) dtheta - (2 mu/3)
+// sum sigma |z| de V, dt = dp omega |z| + 2 mu sigma (de - dtheta |z|/3), d(t n) = dt n + t (dY - n (n . dY)) / |Y|.
+// The multipliers are read from the state computeForce filled; a bond whose trial flag is set is absent.
+bool PalsMaterial::forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
+                                   double* dforce) const {
+  const double K = moduli_.bulk, TWO_MU = 2.0 * moduli_.shear;
+  const double* normDev = state.trial(kNormDev);
+  std::vector<double> omLocal, sgLocal, len, de, n3;
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
+    const double* om = state.trial(kOmega) + b0;
+    const double* sg = state.trial(kSigma) + b0;
+    if (normDev[i] == 0.0) {  // not evaluated yet: from the reference family now
+      omLocal.resize(n), sgLocal.resize(n);
+      influencesOf(fam, i, multipliersOf(fam, i, omega0_, sigma0_), omega0_, sigma0_, omLocal.data(), sgLocal.data());
+      om = omLocal.data(), sg = sgLocal.data();
+    }
+    len.resize(n), de.resize(n), n3.resize(3 * n);
+    const double* Y = y + 3 * i;
+    double th = 0.0, p = 0.0, m = 0.0, dth = 0.0, dpb = 0.0;
+    for (int k = 0; k < n; ++k) {
+      const int b = b0 + k, j = fam.neighbors[b];
+      const double xi = fam.refLength[b], V = neighbourVolume(fam, b);
+      m += sg[k] * xi * xi * V;
+      if (fam.broken && fam.broken[b] != 0.0) continue;
+      double d[3], dd[3];
+      for (int c = 0; c < 3; ++c) d[c] = y[3 * j + c] - Y[c], dd[c] = dy[3 * j + c] - dy[3 * i + c];
+      len[k] = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      for (int c = 0; c < 3; ++c) n3[3 * k + c] = d[c] / len[k];
+      de[k] = n3[3 * k] * dd[0] + n3[3 * k + 1] * dd[1] + n3[3 * k + 2] * dd[2];
+      const double e = len[k] - xi;
+      th += om[k] * xi * e * V;
+      p -= TWO_MU * sg[k] * xi / 3.0 * e * V;
+      dth += om[k] * xi * de[k] * V;
+      dpb -= TWO_MU * sg[k] * xi / 3.0 * de[k] * V;
+    }
+    p += (K + TWO_MU * m / 9.0) * th;
+    const double dp = dpb + (K + TWO_MU * m / 9.0) * dth;
+    const double Vi = fam.volume[i];
+    for (int k = 0; k < n; ++k) {
+      const int b = b0 + k, j = fam.neighbors[b];
+      if (fam.broken && fam.broken[b] != 0.0) continue;
+      const double xi = fam.refLength[b], e = len[k] - xi;
+      const double t = p * om[k] * xi + TWO_MU * sg[k] * (e - th * xi / 3.0);
+      const double dt = dp * om[k] * xi + TWO_MU * sg[k] * (de[k] - dth * xi / 3.0);
+      const double frac = fam.fraction ? fam.fraction[b] : 1.0;
+      const double Vj = fam.volume[j] * frac;
+      for (int c = 0; c < 3; ++c) {
+        const double ddc = dy[3 * j + c] - dy[3 * i + c];
+        const double df = dt * n3[3 * k + c] + t * (ddc - n3[3 * k + c] * de[k]) / len[k];
+        dforce[3 * i + c] += df * Vj;
+        dforce[3 * j + c] -= df * (Vi * frac);
+      }
+    }
+  }
+  return true;
+}
+
 // Each bond's force depends on its own extension (2 mu sigma) and, through theta and p, on every extension of the
 // family: |dt_b/de_k| <= |omega_b| |z_b| |dp/de_k| + (2 mu / 3) |sigma_b| |z_b| |omega_k| |z_k| V_k. Summed over the
 // bonds with V_j, twice (u_j and u_i both move the extension), plus the turning stiffness is neglected (small
@@ -207,7 +272,7 @@ void PalsMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {
   }
 }
 
-// The bond's own extension stiffness: 2 mu sigma from the deviatoric part and K omega^2 |z|^2 from its share of
+// The bond's own extension stiffness: 2 mu sigma from the deviatoric part and K omega^2 |z|^2 V_j from its own share of
 // theta (the coupling to the other bonds is left to the Krylov operator).
 void PalsMaterial::pairStiffness(const FamilyView& fam, double* c) const {
   std::vector<double> om, sg;
@@ -217,7 +282,7 @@ void PalsMaterial::pairStiffness(const FamilyView& fam, double* c) const {
     influencesOf(fam, i, multipliersOf(fam, i, omega0_, sigma0_), omega0_, sigma0_, om.data(), sg.data());
     for (int k = 0; k < n; ++k) {
       const double xi = fam.refLength[b0 + k];
-      c[b0 + k] = 2.0 * moduli_.shear * std::fabs(sg[k]) + moduli_.bulk * om[k] * om[k] * xi * xi;
+      c[b0 + k] = 2.0 * moduli_.shear * std::fabs(sg[k]) + moduli_.bulk * om[k] * om[k] * xi * xi * neighbourVolume(fam, b0 + k);
     }
   }
 }

@@ -24,6 +24,10 @@ class PalsMaterial : public Material {
   void computeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
+  // Exact: the derivative of the force state above along dy, with the multipliers and m fixed (reference quantities).
+  bool hasForceDerivative() const override { return true; }
+  bool forceDerivative(const FamilyView& fam, const double* y, const double* dy, const StateStore& state,
+                       double* dforce) const override;
   bool breaksBonds() const override { return true; }  // computeForce calls breakBond per bond
   double density() const override { return density_; }
   Dimension dimension() const override { return Dimension::ThreeD; }
