@@ -12,6 +12,7 @@
 #include "HardeningPlasticity.hpp"
 #include "LinearLpsMaterial.hpp"
 #include "MicroelasticMaterial.hpp"
+#include "PalsMaterial.hpp"
 #include "ViscoplasticCorrespondenceMaterial.hpp"
 
 namespace pf {
@@ -21,6 +22,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticMaterial::entry(),
       ElasticMaterial::partialVolumeEntry(),
       LinearLpsMaterial::entry(),
+      PalsMaterial::entry(),
       ElasticPlasticMaterial::entry(),
       HardeningPlasticity::entry(),
       MicroelasticMaterial::entry(),

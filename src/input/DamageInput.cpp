@@ -1,8 +1,8 @@
 // The optional "Damage Models" list -> DamageModelSpecs. Peridigm's bond-breaking models "Critical Stretch",
-// "Time Dependent Critical Stretch" (Peridigm_UserDefinedTimeDependentCriticalStretchDamageModel.cpp) and "Initial
-// Damage" (Peridigm_InitialDamageModel.cpp), and Li & Geng's "Maximum Principal Stress" (seed 003, Eqs. 49-51;
-// correspondence models only, ModelBuilder.cpp); a block uses one through its "Damage Model" parameter
-// (BlocksInput.cpp).
+// "Time Dependent Critical Stretch" (Peridigm_UserDefinedTimeDependentCriticalStretchDamageModel.cpp), "Initial
+// Damage" (Peridigm_InitialDamageModel.cpp) and "Interface Aware" (Peridigm_InterfaceAwareDamageModel.cpp; one value
+// for every block, ModelBuilder.cpp), and Li & Geng's "Maximum Principal Stress" (seed 003, Eqs. 49-51; correspondence
+// models only, ModelBuilder.cpp); a block uses one through its "Damage Model" parameter (BlocksInput.cpp).
 #include <cmath>
 
 #include "Sections.hpp"
@@ -15,6 +15,7 @@ const char* const kCriticalStretch = "Critical Stretch";
 const char* const kMaxPrincipal = "Maximum Principal Stress";
 const char* const kTimeDependent = "Time Dependent Critical Stretch";
 const char* const kInitialDamage = "Initial Damage";
+const char* const kInterfaceAware = "Interface Aware";
 
 ParameterSpec thermalExpansionSpec() {
   return S::real("Thermal Expansion Coefficient",
@@ -31,6 +32,16 @@ std::vector<ParameterSpec> criticalStretchSpecs() {
                   "s_c: a bond breaks, for good, once (|y_j − y_i| − |ξ|)/|ξ| > s_c (tension only, as Peridigm)")
               .need()
               .positive(),
+          thermalExpansionSpec()};
+}
+
+std::vector<ParameterSpec> interfaceAwareSpecs() {
+  return {S::text("Damage Model",
+                  "`Interface Aware` (Peridigm's): Critical Stretch with, for a bond between two points, the smaller of "
+                  "their blocks' values; Periforge takes decks where every block has an Interface Aware model of one "
+                  "value, for which the rule is exactly Critical Stretch's (docs/input.md, \"Damage\")")
+              .need(),
+          S::real("Critical Stretch", "s_c: a bond breaks, for good, once (|y_j − y_i| − |ξ|)/|ξ| > s_c").need().positive(),
           thermalExpansionSpec()};
 }
 
@@ -106,10 +117,12 @@ std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string
       out.push_back(spec);
       continue;
     }
-    if (model != kCriticalStretch)
+    if (model != kCriticalStretch && model != kInterfaceAware)
       fail(file, path, "unknown 'Damage Model' = '" + model + "' (known: " +
-                           joinNames({kCriticalStretch, kTimeDependent, kInitialDamage, kMaxPrincipal}) + ")");
-    const ParameterValues v = readList(d, criticalStretchSpecs(), {}, file, path);
+                           joinNames({kCriticalStretch, kTimeDependent, kInitialDamage, kMaxPrincipal, kInterfaceAware}) +
+                           ")");
+    const ParameterValues v =
+        readList(d, model == kInterfaceAware ? interfaceAwareSpecs() : criticalStretchSpecs(), {}, file, path);
     DamageModelSpec spec{name, model, v.get("Critical Stretch"), 0.0};
     spec.thermalExpansion = v.get("Thermal Expansion Coefficient", -1.0);
     out.push_back(spec);

@@ -49,6 +49,7 @@ std::vector<ParameterTable> parameterTables() {
        maximumPrincipalStressSpecs()},
       {"damage: Time Dependent Critical Stretch",
        "Damage Models/<any name> with Damage Model = Time Dependent Critical Stretch", timeDependentCriticalStretchSpecs()},
+      {"damage: Interface Aware", "Damage Models/<any name> with Damage Model = Interface Aware", interfaceAwareSpecs()},
       {"damage: Initial Damage", "Damage Models/<any name> with Damage Model = Initial Damage", initialDamageSpecs()},
       {"node-set-region", "Boundary Conditions/<name> with Type = Node Set Region", regionSpecs()},
       {"condition", "Boundary Conditions/<name> (a condition)", conditionSpecs()},

@@ -39,6 +39,7 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
 std::vector<ParameterSpec> criticalStretchSpecs();
 std::vector<ParameterSpec> maximumPrincipalStressSpecs();
 std::vector<ParameterSpec> timeDependentCriticalStretchSpecs();
+std::vector<ParameterSpec> interfaceAwareSpecs();
 std::vector<ParameterSpec> initialDamageSpecs();
 std::vector<DamageModelSpec> parseDamageModels(const PL& deck, const std::string& file, const std::string& dir);
 

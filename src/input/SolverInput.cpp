@@ -65,7 +65,7 @@ std::vector<ParameterSpec> solverListSpecs() {
   // solver's end state (Peridigm's own gold files for `Initialize Predictor From Previous Solver` true and false
   // are identical).
   return {S::flag("Verbose", "accepted (Peridigm's)"), S::real("Initial Time", "start time").byDefault("0"),
-          S::real("Final Time", "end time, > `Initial Time` (not with QuasiStatic `Time Steps`)"),
+          S::real("Final Time", "end time, > `Initial Time` (with QuasiStatic `Time Steps` and no `Number of Load Steps`: omitted or the list's last entry)"),
           S::text("Peridigm Preconditioner", "Peridigm's preconditioner matrix for NOX; accepted, Periforge's is its "
                                              "pair-stiffness matrix whatever the value")
               .oneOf({"Full Tangent", "Block 3x3", "None"}),
@@ -109,8 +109,9 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
   std::vector<std::string> names;
   for (const SolverEntry& e : solverRegistry()) names.push_back(e.name);
   std::vector<ParameterSpec> listSpecs = solverListSpecs();
+  // Peridigm (Peridigm.cpp, executeQuasiStatic): Final Time with Number of Load Steps, else the Time Steps list.
   const bool hasTimeList = s.isSublist("QuasiStatic") && s.sublist("QuasiStatic").isParameter("Time Steps") &&
-                           !s.isParameter("Final Time");
+                           !(s.isParameter("Final Time") && s.sublist("QuasiStatic").isParameter("Number of Load Steps"));
   if (!hasTimeList) listSpecs[2] = listSpecs[2].need();
   const ParameterValues list = readList(s, listSpecs, names, file, path);
   int count = 0;
@@ -138,11 +139,17 @@ SolverSpec parseSolver(const PL& s, const std::string& file, const std::string& 
 
   const double t0 = list.get("Initial Time");
   if (hasTimeList) {
-    if (list.has("Initial Time"))
-      fail(file, path, "'Initial Time' with 'Time Steps': the first of the 'Time Steps' is the initial time");
     if (spec.options.has("Number of Load Steps"))
       fail(file, sp, "give 'Time Steps' or 'Number of Load Steps' (with the list's 'Final Time'), not both");
     spec.times = timeList(spec.options, file, sp);
+    // Peridigm then ignores the list's Initial and Final Time; a deck may repeat the list's ends there, but a value
+    // that contradicts them is a mistake of the deck, not a choice.
+    if (list.has("Initial Time") && list.get("Initial Time") != spec.times.front())
+      fail(file, path, "'Initial Time' (" + numberText(list.get("Initial Time")) + ") is not the first of the 'Time "
+                       "Steps' (" + numberText(spec.times.front()) + "), which is the initial time");
+    if (list.has("Final Time") && list.get("Final Time") != spec.times.back())
+      fail(file, path, "'Final Time' (" + numberText(list.get("Final Time")) + ") is not the last of the 'Time "
+                       "Steps' (" + numberText(spec.times.back()) + "), which is the final time");
     return spec;
   }
   // With the list's Final Time given, Peridigm steps by Number of Load Steps and ignores Time Steps.

@@ -47,7 +47,28 @@ double bulkModulusOf(const MaterialSpec& m) {
 
 // Block id -> its group's material and horizon. Peridigm's group "default" takes every block of the
 // cloud that no other group names (none left: the group is unused).
+// Peridigm's Interface Aware damage breaks a bond past the smaller of its two ends' critical stretches, and never a
+// bond whose far end lies in a block without that model (its Critical_Stretch field is 0 there). With every block
+// on an Interface Aware model of one value that is exactly the Critical Stretch rule the kernels apply per block;
+// the per-bond thresholds of other decks are not implemented, so those are refused rather than run differently.
+void requireUniformInterfaceAware(const Deck& deck) {
+  const DamageModelSpec* first = nullptr;
+  for (const BlockGroupSpec& g : deck.blocks) {
+    const DamageModelSpec* d = deck.damageModel(g.damageModel);
+    if (d && d->model == "Interface Aware" && !first) first = d;
+  }
+  if (!first) return;
+  for (const BlockGroupSpec& g : deck.blocks) {
+    const DamageModelSpec* d = deck.damageModel(g.damageModel);
+    if (!d || d->model != "Interface Aware" || d->criticalStretch != first->criticalStretch)
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Damage Model': with 'Interface Aware' damage ('" +
+                       first->name + "') every block needs an Interface Aware model of the same 'Critical Stretch' " +
+                       "(per-bond thresholds across blocks are not implemented; docs/input.md, \"Damage\")");
+  }
+}
+
 std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloudBlocks) {
+  requireUniformInterfaceAware(deck);
   std::map<int, BlockSpec> blocks;
   std::map<std::string, std::shared_ptr<const Material>> built;
   std::map<std::string, std::vector<std::shared_ptr<const FieldOperator>>> operators;

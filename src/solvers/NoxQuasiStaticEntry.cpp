@@ -105,7 +105,7 @@ SolverEntry NoxQuasiStaticSolver::peridigmEntry() {
   e.loadSteps = true;
   e.parameters = commonSpecs(true);
   e.parameters.insert(e.parameters.begin(),
-                      S::integer("Number of Load Steps", "n (or `Time Steps` without the list's `Final Time`)").atLeast(1));
+                      S::integer("Number of Load Steps", "n, with the list's `Final Time` (else the `Time Steps` list)").atLeast(1));
   e.parameters.insert(e.parameters.begin() + 1, S::text("Time Steps", "the load times, the first being the initial time"));
   e.parameters.push_back(S::text("Belos Linear Solver", "Peridigm's Krylov method; accepted, Periforge's is GMRES (each "
                                                         "step converges to the same tolerance)")

@@ -234,3 +234,18 @@ add_test(NAME interfaces_aperture_np2 COMMAND ${ifguard} ${PY} ${REG}/interfaces
   ${REG}/interfaces/stretch.xml.in ${PERIDIGM_SUITE}/Interfaces/Interfaces.g ${PERIFORGE_EXE} 2 ${MPIRUN})
 set_tests_properties(interfaces_aperture_np2 PROPERTIES LABELS "regression" PROCESSORS 2)
 periforge_mark_shared(interfaces_aperture_np2 "${ifguard}")
+
+# Peridigm's Interface Aware damage decks (Pals material, fully prescribed, Damage compared): passing since Interface
+# Aware with one value on every block is Critical Stretch's rule (docs/input.md, "Damage"). Their mesh is
+# ../mesh*.csv, beside the case's folder: Peridigm runs them from np1/ of the case, and so does scripts/peridigm_suite,
+# which runs and compares each here (exit 1 unless the case passes).
+foreach(case InterfaceAwareDamageModel__InterfaceAwareDamageModelOneBlock
+             InterfaceAwareDamageModel__InterfaceAwareDamageModelTwoBlocksSameValues
+             InterfaceAwareDamageModel__InterfaceAwareDamageModelTwoBlocksDifferentValues)
+  set(name peridigm_suite_${case}_np2)
+  periforge_shared_guard(guard ${PERIDIGM_SUITE})
+  add_test(NAME ${name} COMMAND ${guard} ${PY} ${PROJECT_SOURCE_DIR}/scripts/peridigm_suite --suite ${PERIDIGM_SUITE}
+    --exe ${PERIFORGE_EXE} --np 2 --only ${case} --work ${CMAKE_CURRENT_BINARY_DIR}/regression/${name} --expect-pass 1)
+  set_tests_properties(${name} PROPERTIES LABELS "regression" PROCESSORS 2)
+  periforge_mark_shared(${name} "${guard}")
+endforeach()

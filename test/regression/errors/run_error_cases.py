@@ -88,6 +88,24 @@ CASES = [
        '<ParameterList name="QuasiStatic"><Parameter name="Time Steps" type="string" value="0.0 0.5 one"/></ParameterList>'),
       (r'<Parameter name="Initial Time" type="double" value="0.0"/>', '')],
      ["Time Steps", "one"]),
+    ("Final Time that is not the last of the Time Steps",
+     [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
+       '<ParameterList name="QuasiStatic"><Parameter name="Time Steps" type="string" value="0.0 0.5 0.9"/></ParameterList>')],
+     ["Final Time", "Time Steps", "0.9"]),
+    # Interface Aware damage on one block and another model on the rest: per-bond thresholds are not implemented.
+    ("Interface Aware beside another damage model",
+     [('<ParameterList name="Blocks">', '<ParameterList name="Damage Models"><ParameterList name="IA">'
+       '<Parameter name="Damage Model" type="string" value="Interface Aware"/>'
+       '<Parameter name="Critical Stretch" type="double" value="0.01"/></ParameterList><ParameterList name="CS">'
+       '<Parameter name="Damage Model" type="string" value="Critical Stretch"/>'
+       '<Parameter name="Critical Stretch" type="double" value="0.01"/></ParameterList></ParameterList>\n'
+       '  <ParameterList name="Blocks"><ParameterList name="Rest">'
+       '<Parameter name="Block Names" type="string" value="default"/><Parameter name="Material" type="string" value="Steel"/>'
+       '<Parameter name="Horizon" type="double" value="0.00603"/><Parameter name="Damage Model" type="string" value="CS"/>'
+       '</ParameterList>'),
+      ('<Parameter name="Material" type="string" value="Steel"/>\n',
+       '<Parameter name="Material" type="string" value="Steel"/><Parameter name="Damage Model" type="string" value="IA"/>\n')],
+     ["Blocks/Rest", "Interface Aware", "Critical Stretch"]),
     # Peridigm's QuasiStatic 'Adaptive Load-Stepping' (docs/peridigm.md): its lists are checked when the deck is read.
     ("adaptive load stepping without its maxima",
      [(r'<ParameterList name="Adaptive Dynamic Relaxation">.*?</ParameterList>',
