@@ -63,7 +63,7 @@ std::vector<ParameterSpec> blockSpecs() {
                   "(alone, in one group at most): every block of the discretization that no other group names")
               .need(),
           S::text("Material", "a sub-list name of `Materials`").need(), S::scalar("Horizon",
-                    "horizon δ: a number, or (Peridigm's string form) an expression in `x`, `y`, `z` evaluated at each "
+                    "horizon δ > 0: a number, or (Peridigm's string form) an expression in `x`, `y`, `z` evaluated at each "
                     "point's reference coordinates (a horizon that varies by point; correspondence models only)")
               .need(),
           S::text("Damage Model", "a sub-list name of `Damage Models`; none: the block's bonds never break"),

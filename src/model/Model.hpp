@@ -148,6 +148,8 @@ class Model {
   void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
+  // Whether any condition moves the body: a prescribed displacement, a body force or a follower pressure.
+  bool hasConditions() const { return !prescribedLoads_.empty() || !bodyForces_.empty() || !followerLoads_.empty(); }
   // Collective: throws InputError naming the condition if a prescribed displacement or body force is not
   // finite at t at any of its nodes. Called at the start time, before each quasi-static load step and
   // when a solver finds its state non-finite; applyPrescribed and bodyForce themselves stay unchecked.

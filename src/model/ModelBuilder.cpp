@@ -326,6 +326,47 @@ void addConditions(const Deck& deck, Problem& pb, const std::unordered_map<int, 
   }
 }
 
+// Each owned point's horizon (model/PointHorizons.hpp) and what the builder needs of it.
+struct OwnedHorizons {
+  std::vector<double> value;        // per point of the rank's owned cloud
+  bool uniform = true;              // one value across the whole body
+  std::map<int, double> largestOf;  // expression blocks: the largest of their points' (all ranks), their fam.horizon
+};
+
+// Collective. An expression block's value <= 0 or not finite at a point is an InputError on every rank.
+OwnedHorizons ownedHorizons(const Deck& deck, const std::map<int, BlockSpec>& blocks, const PointCloud& owned,
+                            const Communicator& comm) {
+  std::map<int, HorizonRule> ruleOf;
+  for (const auto& kv : blocks)
+    ruleOf[kv.first] = {kv.second.horizon, kv.second.horizonExpression, deck.file + ": Blocks/" + kv.second.group};
+  OwnedHorizons h;
+  collectively(comm, [&] { h.value = pointHorizons(owned, ruleOf); });
+  h.uniform = uniformHorizon(h.value, comm);
+  for (const auto& kv : blocks) {  // the same blocks in the same order on every rank: one reduction each
+    if (!kv.second.horizonExpression) continue;
+    double largest = 0.0;
+    for (int p = 0; p < owned.size(); ++p)
+      if (owned.block[p] == kv.first) largest = std::max(largest, h.value[p]);
+    h.largestOf[kv.first] = comm.max(largest);
+  }
+  if (deck.discretization.boxNeighbourhood && !h.largestOf.empty())
+    throw InputError(deck.file + ": Blocks/" + blocks.at(h.largestOf.begin()->first).group + ": 'Horizon' is an "
+                     "expression in x, y, z; PdQuickGrid's box neighbourhood takes one horizon");
+  return h;
+}
+
+// Collective. Per overlap node (the layout's order, ghosts imported), each point's own horizon; empty when one value
+// holds everywhere (FamilyView::pointHorizon stays null: the constant path).
+std::vector<double> overlapHorizons(const DistributedLayout& layout, const PointCloud& owned, const OwnedHorizons& h) {
+  if (h.uniform) return {};
+  std::unordered_map<int, int> ownedIndex;
+  for (int p = 0; p < owned.size(); ++p) ownedIndex[owned.gid[p]] = p;
+  std::vector<double> mine(layout.numOwned()), overlap(layout.numOverlap(), 0.0);
+  for (int i = 0; i < layout.numOwned(); ++i) mine[i] = h.value[ownedIndex.at(layout.gids()[i])];
+  layout.importToOverlap(mine.data(), overlap.data(), 1);
+  return overlap;
+}
+
 }  // namespace
 
 Problem buildProblem(const Deck& deck, const Communicator& comm) {
@@ -348,24 +389,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   pb.cloud = withoutPoints(slab);
   slab = PointCloud();
   const PointCloud& cloud = pb.cloud;
-  std::map<int, HorizonRule> ruleOf;
-  for (const auto& kv : blocks)
-    ruleOf[kv.first] = {kv.second.horizon, kv.second.horizonExpression, inputFile + ": Blocks/" + kv.second.group};
-  std::vector<double> horizon;
-  collectively(comm, [&] { horizon = pointHorizons(owned, ruleOf); });
-  const bool uniform = uniformHorizon(horizon, comm);
-  // An expression block's one horizon, for what takes one per block (fam.horizon): the largest of its points'.
-  std::map<int, double> largestOf;
-  for (const auto& kv : blocks) {  // the same blocks in the same order on every rank: one reduction each
-    if (!kv.second.horizonExpression) continue;
-    double largest = 0.0;
-    for (int p = 0; p < owned.size(); ++p)
-      if (owned.block[p] == kv.first) largest = std::max(largest, horizon[p]);
-    largestOf[kv.first] = comm.max(largest);
-  }
-  if (deck.discretization.boxNeighbourhood && !largestOf.empty())
-    throw InputError(inputFile + ": Blocks/" + blocks.at(largestOf.begin()->first).group + ": 'Horizon' is an "
-                     "expression in x, y, z; PdQuickGrid's box neighbourhood takes one horizon");
+  const OwnedHorizons horizon = ownedHorizons(deck, blocks, owned, comm);
   // A PdQuickGrid cloud is block 1 only: its horizon sets the box neighbourhood.
   const double h1 = blocks.count(1) ? blocks.at(1).horizon : blocks.begin()->second.horizon;
   const std::array<double, 3> box = quickGridBox(deck.discretization, h1);
@@ -374,25 +398,15 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   rules.box = deck.discretization.boxNeighbourhood ? &box : nullptr;
   rules.omitBondsBetweenBlocks = deck.discretization.omitBondsBetweenBlocks;
   rules.filters = &deck.discretization.bondFilters;
-  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence, rules);
+  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon.value, cloud.influence, rules);
   std::vector<double> x = layout->releaseCoordinates(), volume = layout->releaseVolumes();
   requireDistinctPoints(*layout, x, volume, cloud.spacing, inputFile);
   const std::vector<int>& gids = layout->gids();
   std::vector<BlockModel> blockModels;
-  // Per overlap node, each point's own horizon, unless one horizon holds everywhere (FamilyView::pointHorizon).
-  std::vector<double> pointHorizon;
-  if (!uniform) {
-    std::vector<double> ownedHorizon(layout->numOwned());
-    const std::vector<int>& overlapGids = layout->gids();
-    std::unordered_map<int, int> ownedIndex;
-    for (int p = 0; p < owned.size(); ++p) ownedIndex[owned.gid[p]] = p;
-    for (int i = 0; i < layout->numOwned(); ++i) ownedHorizon[i] = horizon[ownedIndex.at(overlapGids[i])];
-    pointHorizon.assign(layout->numOverlap(), 0.0);
-    layout->importToOverlap(ownedHorizon.data(), pointHorizon.data(), 1);
-  }
+  std::vector<double> pointHorizon = overlapHorizons(*layout, owned, horizon);
   for (const BlockRange& r : layout->blocks()) {
     const BlockSpec& s = blocks.at(r.blockId);
-    const double blockHorizon = s.horizonExpression ? largestOf.at(r.blockId) : s.horizon;
+    const double blockHorizon = s.horizonExpression ? horizon.largestOf.at(r.blockId) : s.horizon;
     blockModels.push_back(
         BlockModel{r.blockId, s.name, s.materialName, blockHorizon, r.begin, r.end, s.material, s.criticalStretch,
                    s.ndoBand, s.tensileStrength, s.fieldOperators, s.stretchOfTime, s.initialBreaks});
