@@ -87,6 +87,9 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Horizon' is an expression in x, y, z (a horizon that varies by "
                        "point); material '" + g.material + "' (" + deck.material(g.material).entry->model +
                        ") takes one horizon per block, as in Peridigm: only the correspondence models take a horizon per point");
+    if (g.horizonExpression && operators.count(g.material) && !operators[g.material].empty())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Horizon' is an expression in x, y, z; the heat terms of "
+                       "material '" + g.material + "' (conduction, heat capacity, plastic heating) take one horizon per block");
     if (g.horizonExpression && deck.contact.given)
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Horizon' is an expression in x, y, z; contact takes one "
                        "horizon per block (as Peridigm: variable horizon not supported by contact)");

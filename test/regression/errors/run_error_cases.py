@@ -214,6 +214,13 @@ CASES = [
        '<Parameter name="Spacing" type="double" value="0.002"/><Parameter name="Layer Width" type="double" value="0.00603"/>'),
       ('value="Elastic"/>', 'value="Elastic Correspondence"/><Parameter name="Hourglass Coefficient" type="double" value="0.02"/>')],
      ["Blocks/Bar", "'Horizon' = '0.00603 - 0.1*x' is", "at the point (", "of block_1", "positive and finite"]),
+    ("horizon expression with a heat term of one horizon per block",
+     [('<Parameter name="Horizon" type="double" value="0.00603"/>', '<Parameter name="Horizon" type="string" value="0.00603 + 0.01*x"/>'),
+      ('<Parameter name="Spacing" type="double" value="0.002"/>',
+       '<Parameter name="Spacing" type="double" value="0.002"/><Parameter name="Layer Width" type="double" value="0.00603"/>'),
+      ('value="Elastic"/>', 'value="Elastic Correspondence"/><Parameter name="Hourglass Coefficient" type="double" value="0.02"/>'
+                            '<Parameter name="Thermal Conductivity" type="double" value="50"/>')],
+     ["Blocks/Bar", "'Horizon' is an expression", "heat terms", "one horizon per block"]),
     ("horizon as long as the bar",
      [('<Parameter name="Horizon" type="double" value="0.00603"/>', '<Parameter name="Horizon" type="double" value="1.0"/>')],
      ["Discretization", "bonds", "'Horizon'"]),
