@@ -199,6 +199,22 @@ std::vector<double> CorrespondenceMaterial::stepLengths(const FamilyView& fam, S
   return dt;
 }
 
+namespace {
+
+// Whether owned node i sums its force in gather form: every neighbour has i's horizon, so each bond of i's family is
+// also a bond of the neighbour's, with the same omega and partial volume. Otherwise (horizons that differ along a
+// bond: the families are not symmetric) i adds its own bonds one-pass, f_i += T V_j, f_j -= T V_i, as Peridigm does
+// for every point; the neighbours see its zero row and do the same for their bonds to i.
+bool gathers(const FamilyView& fam, int i) {
+  if (!fam.pointHorizon) return true;
+  const double h = fam.pointHorizon[i];
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b)
+    if (fam.pointHorizon[fam.neighbors[b]] != h) return false;
+  return true;
+}
+
+}  // namespace
+
 void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                           double* force) const {
   KinematicFields ks(state);
@@ -224,7 +240,6 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   // Phase 2: the model's stress update on the mechanical increment; phase 3: stress to force state, plus the
   // hourglass force.
   stressUpdate(fam, state, R, dt, tauN, de, tau);
-  const double c = hourglassConstant(fam.horizon);
   // Energies per node (J; docs/materials.md, "Energy"). Foster et al. (2010)'s Eqs. 49-52 are rate forms of
   // Cauchy stress: the stress power per reference volume is J sigma : D = J tau : d (Eq. 18's unrotated d).
   // Stored: J V (1/2 tau : C^-1 : tau) plus the work taken by the hourglass bonds (history, trapezoid rule).
@@ -237,12 +252,13 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
   const double* dissipatedN = dissipatedWanted_ ? state.committed("Dissipated_Energy") : nullptr;
   for (int k = 0; k < n; ++k) {
     const int i = fam.begin + k;
+    const double c = hourglassConstant(horizonAt(fam, i));  // Peridigm: the point's own horizon
     if (stressDamage && detached[k]) tau[k] = Mat3{};
     taus.set(i, tau[k]);
     vm[i] = vonMises(tau[k]);
     const Mat3 P = piolaFromUnrotated(F[k], R[k], tau[k]);
     const Mat3 A = mul(P, Kinv[k]);
-    if (fam.exchange) {  // gather form: completeForce adds the force once every row is on the ghosts
+    if (fam.exchange && gathers(fam, i)) {  // gather form: completeForce adds it once every row is on the ghosts
       double* row = fam.exchange + static_cast<std::size_t>(fam.exchangeStride) * i;
       std::copy(A.begin(), A.end(), row + kRowA);
       std::copy(F[k].begin(), F[k].end(), row + kRowF);
@@ -257,7 +273,7 @@ void CorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y
         std::copy(P.begin(), P.end(), row + kRowP);
         std::copy(Kinv[k].begin(), Kinv[k].end(), row + kRowKinv);
       }
-    } else {
+    } else {  // one-pass; in a model run its zero row tells the neighbours' gather sums to send it their reactions
       addCorrespondenceForce(fam, i, A, force);
       addHourglassForce(fam, i, y, F[k], c, force);
     }
@@ -302,6 +318,7 @@ void CorrespondenceMaterial::completeForce(const FamilyView& fam, const double* 
   double hgScratch[3];
   double* hg = hgField[0] ? hgScratch : nullptr;
   for (int i = fam.begin; i < fam.end; ++i) {
+    if (fam.exchange[stride * i + kRowFlag] == 0.0) continue;  // summed one-pass in computeForce (gathers)
     if (stressDamage) {
       const double s1i = fam.exchange[stride * i + kRowS1];
       double count = 0.0;
@@ -333,8 +350,8 @@ void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound
   // own stress contributes <= 2 C a_i^2 and its neighbours' stresses about as much (their a taken equal to
   // a_i: the view has no ghost families). The hourglass bonds act like bond-based springs c/|xi|.
   const double C = std::max(3.0 * moduli_.bulk, 2.0 * moduli_.shear);
-  const double c = hourglassConstant(fam.horizon);
   for (int i = fam.begin; i < fam.end; ++i) {
+    const double c = hourglassConstant(horizonAt(fam, i));
     // A singular K is reported by the first force evaluation, which fails on every rank together (this
     // runs while the model is built, where a throw on one rank would leave the others in a collective).
     ShapeAndGradient sg;
@@ -362,9 +379,10 @@ void CorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound
 void CorrespondenceMaterial::pairStiffness(const FamilyView& fam, double* c) const {
   // The bond-based solid with the same bulk modulus, plus the hourglass spring: a preconditioner only
   // needs the scale of each bond's stiffness.
-  const double base = micromodulus(fam.horizon) * (1.0 + hourglass_);
-  for (int i = fam.begin; i < fam.end; ++i)
+  for (int i = fam.begin; i < fam.end; ++i) {
+    const double base = micromodulus(horizonAt(fam, i)) * (1.0 + hourglass_);
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) c[b] = base / fam.refLength[b];
+  }
 }
 
 }  // namespace pf

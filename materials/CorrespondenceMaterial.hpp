@@ -28,6 +28,8 @@ class CorrespondenceMaterial : public Material {
   int exchangeWidth(const FamilyView& fam) const override;
   void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const override;
   bool supportsSurfaceBand() const override { return true; }
+  // Peridigm's correspondence kernels take each point's own horizon (correspondence.cxx: the hourglass constant).
+  bool takesPointHorizon() const override { return true; }
   // Maximum Principal Stress damage (core/StressDamage.hpp), in the gather form only (a model run): each row
   // carries its point's sigma1, completeForce decides the bonds and leaves the broken ones out.
   bool breaksBondsByStress() const override { return true; }

@@ -11,7 +11,9 @@ def names(ds, key):
     if key not in ds.variables:
         return []
     rows = np.ma.getdata(ds.variables[key][:])
-    return [b"".join(r).split(b"\0", 1)[0].decode("ascii", "replace").strip() for r in rows]
+    # numpy reads a NUL char as b"": put it back, or the bytes a writer left after the terminator (Peridigm's
+    # VariableHorizonParsing gold: "Number_Of_Neighbors\0\0\0\0?\xfa...") would join the name.
+    return [b"".join(c if c else b"\0" for c in r).split(b"\0", 1)[0].decode("ascii", "replace").strip() for r in rows]
 
 
 variable_names = names  # the name the compat checks use

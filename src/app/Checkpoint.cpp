@@ -114,7 +114,9 @@ std::vector<std::pair<std::string, std::string>> runFingerprint(const Deck& deck
   // The deck's block groups, not model.blocks(): those are the blocks this rank owns points of, and a rank without
   // points of some block would find the file foreign alone and leave the others waiting.
   for (const BlockGroupSpec& b : deck.blocks)
-    items.emplace_back("block group '" + b.name + "'", b.material + ", horizon " + number(b.horizon));
+    items.emplace_back("block group '" + b.name + "'", b.material + ", horizon " +
+                                                          (b.horizonExpression ? "'" + b.horizonExpression->text() + "'"
+                                                                               : number(b.horizon)));
   std::string history;
   for (const StateSpec& s : problem.model->state().specs())
     if (s.history) history += s.name + (s.where == Location::Node ? " (point) " : " (bond) ");

@@ -69,6 +69,14 @@ void initialState(const Problem& problem, double t0, std::vector<double>& u, std
   }
 }
 
+// Collective: u = v = 0 everywhere and nothing can move the body (RunStart::atRest): no condition, contact, wall or
+// field (a temperature change would expand it).
+bool atRest(const Model& model, const std::vector<double>& u, const std::vector<double>& v) {
+  double moving = model.hasConditions() || model.hasForceTerms() || !model.rigidWalls().empty() || !model.fields().empty();
+  for (std::size_t k = 0; k < u.size() && moving == 0.0; ++k) moving = u[k] != 0.0 || v[k] != 0.0;
+  return model.max(moving) == 0.0;
+}
+
 // "Solver", or Peridigm's Solver1, Solver2, ... run in sequence, each continuing from the state
 // (displacement, velocity, material history) the previous one ended with. A restart begins with the
 // checkpoint's solver list, after its step.
@@ -149,7 +157,8 @@ void run(const std::string& inputFile, const std::string& restartFile, const Com
     if (solvers[k]->advances("Displacement") && !model.hasForceModel())
       throw InputError(inputFile + ": " + deck.solvers[k].listName + ": solver '" + deck.solvers[k].type +
                        "' advances the displacement, but no block has a force model (Diffusion blocks only conduct heat)");
-    solvers[k]->check(model);
+    solvers[k]->check(model, RunStart{k == 0 && atRest(model, u, v), deck.solvers[k].times.front(),
+                                      deck.solvers[k].times.back()});
   }
   OutputFanout output(comm);
   std::unique_ptr<Checkpointer> checkpointer;  // or null: no Restart list; the fanout calls it after each step

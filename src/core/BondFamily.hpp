@@ -39,6 +39,10 @@ struct FamilyView {
   const double* fraction = nullptr;
   bool unitInfluence = false;       // influence[b] == 1 for every bond: kernels may skip reading it
   double horizon = 0.0;
+  // Per overlap node, its own horizon when the horizons of the body are not all one value (a Horizon expression
+  // in x, y, z, or blocks of different horizons; model/PointHorizons.hpp), else null. Peridigm's correspondence
+  // models read a point's own horizon (Material::takesPointHorizon); bond families are always built from it.
+  const double* pointHorizon = nullptr;
   // Bond damage (core/BondDamage.hpp); brokenN null: the block has no damage model and nothing breaks.
   const double* brokenN = nullptr;  // per bond, committed (or a quasi-static step's base set): 1 broken, 0 intact
   double* broken = nullptr;         // per bond, trial: written for every bond of [begin, end) on each evaluation
@@ -109,6 +113,9 @@ inline FamilyView makeView(const BondFamily& f, int begin, int end, const double
   v.numNodes = f.numNodes;
   return v;
 }
+
+// The horizon of overlap node i: its own, or the block's when every point has that one.
+inline double horizonAt(const FamilyView& fam, int i) { return fam.pointHorizon ? fam.pointHorizon[i] : fam.horizon; }
 
 // m_i = sum_j omega_ij |xi_ij|^2 V_j (V_j times the bond's fraction, if any) for owned nodes [begin, end)
 // (Pirzadeh 2024 Eq. 5 context).

@@ -92,6 +92,10 @@ class Material {
   // Whether the model honours FamilyView's surface band (Surface Correction = NDO Band); a block asking for
   // it with a model that does not is refused at input.
   virtual bool supportsSurfaceBand() const { return false; }
+  // Whether the model reads each point's own horizon (horizonAt(fam, i), FamilyView::pointHorizon) wherever the
+  // horizon enters, as Peridigm's correspondence models do; false: one horizon per block (fam.horizon), and a
+  // block whose Horizon is an expression in x, y, z is refused at input (Peridigm's other models refuse it too).
+  virtual bool takesPointHorizon() const { return false; }
 
   // The nodal fields (core/FieldValues.hpp) computeForce reads through FamilyView::fields, e.g.
   // "Temperature_Change" for thermal expansion. A deck whose model does not hold one of them is refused at

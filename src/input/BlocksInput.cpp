@@ -1,5 +1,9 @@
 // The "Materials" and "Blocks" lists -> MaterialSpecs (checked against the model registry) and BlockGroupSpecs.
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <set>
+#include <sstream>
 
 #include "Sections.hpp"
 
@@ -21,6 +25,34 @@ namespace {
 
 using S = ParameterSpec;
 
+// Peridigm's Horizon is a double, or a string: an expression in x, y, z (Peridigm_HorizonManager.cpp). A string
+// that is a plain number is the same constant (Peridigm evaluates it at every point to that value).
+void readHorizon(const PL& list, const std::string& file, const std::string& path, BlockGroupSpec& g) {
+  const Teuchos::ParameterEntry& e = list.getEntry("Horizon");
+  std::string text = scalarAsText(e);
+  double value = 0.0;
+  bool number = !e.isType<std::string>();
+  if (number) {
+    value = getNumber(list, "Horizon");
+  } else {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    value = std::strtod(begin, &end);
+    while (end && end != begin && std::isspace(static_cast<unsigned char>(*end))) ++end;
+    number = end != begin && end && *end == '\0';
+  }
+  if (!number) {
+    g.horizonExpression = std::make_shared<const Expression>(text, file + ": " + path + "/Horizon");
+    return;
+  }
+  if (!(value > 0.0) || !std::isfinite(value)) {
+    std::ostringstream got;
+    got << value;
+    fail(file, path, "'Horizon' must be positive (got " + got.str() + ")");
+  }
+  g.horizon = value;
+}
+
 
 }  // namespace
 
@@ -30,7 +62,10 @@ std::vector<ParameterSpec> blockSpecs() {
                   "belongs to one group only. Peridigm's `default` "
                   "(alone, in one group at most): every block of the discretization that no other group names")
               .need(),
-          S::text("Material", "a sub-list name of `Materials`").need(), S::real("Horizon", "horizon δ").need().positive(),
+          S::text("Material", "a sub-list name of `Materials`").need(), S::scalar("Horizon",
+                    "horizon δ > 0: a number, or (Peridigm's string form) an expression in `x`, `y`, `z` evaluated at each "
+                    "point's reference coordinates (a horizon that varies by point; correspondence models only)")
+              .need(),
           S::text("Damage Model", "a sub-list name of `Damage Models`; none: the block's bonds never break"),
           S::text("Surface Correction",
                   "`NDO Band`: Li & Geng's surface-effect removal for correspondence models (the divergence form "
@@ -88,7 +123,7 @@ std::vector<BlockGroupSpec> parseBlocks(const PL& deck, const std::vector<Materi
     BlockGroupSpec g;
     g.name = blocks.name(it);
     g.material = b.text("Material");
-    g.horizon = b.get("Horizon");
+    readHorizon(blocks.sublist(blocks.name(it)), file, bpath, g);
     g.ndoBand = b.text("Surface Correction") == "NDO Band";
     if (!out.empty() && out.front().ndoBand != g.ndoBand)
       fail(file, bpath, "'Surface Correction' differs from block group '" + out.front().name +

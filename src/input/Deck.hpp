@@ -86,7 +86,10 @@ struct BlockGroupSpec {
   bool isDefault = false;             // "Block Names" = "default": every block no other group names
   std::string material;               // a MaterialSpec name
   std::string damageModel;            // a DamageModelSpec name; empty: bonds never break
+  // Horizon: a number (constant, horizonExpression null), or Peridigm's string form, an expression in x, y, z
+  // evaluated at each point's reference coordinates (model/PointHorizons.hpp); then horizon is 0.
   double horizon = 0.0;
+  std::shared_ptr<const Expression> horizonExpression;
   bool ndoBand = false;               // Surface Correction = NDO Band (model/SurfaceBand.hpp)
 };
 
@@ -237,7 +240,7 @@ struct Deck {
 
   const MaterialSpec& material(const std::string& name) const;
   const DamageModelSpec* damageModel(const std::string& name) const;  // null for "" (no damage model)
-  double maxHorizon() const;
+  double maxHorizon() const;  // the largest constant Horizon (expression ones are known per point only)
   bool hasDynamicSolver() const;  // a solver whose entry is dynamic (Verlet, Implicit)
 };
 

@@ -12,9 +12,9 @@
 namespace pf {
 
 Model::Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> overlapCoords,
-             std::vector<double> overlapVolume, std::vector<BlockModel> blocks)
+             std::vector<double> overlapVolume, std::vector<BlockModel> blocks, std::vector<double> pointHorizon)
     : layout_(std::move(layout)), x_(std::move(overlapCoords)), volume_(std::move(overlapVolume)),
-      blocks_(std::move(blocks)) {
+      pointHorizon_(std::move(pointHorizon)), blocks_(std::move(blocks)) {
   const int n = numOwned();
   density_.assign(n, 0.0);
   bound_.assign(n, 0.0);
@@ -276,6 +276,7 @@ void Model::setVelocity(const double* v) {
 
 FamilyView Model::blockView(const BlockModel& b) const {
   FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+  if (!pointHorizon_.empty()) view.pointHorizon = pointHorizon_.data();
   view.time = time_;
   view.startTime = startTime_;
   if (!yCommitted_.empty()) view.yN = yCommitted_.data();
@@ -291,9 +292,11 @@ FamilyView Model::blockView(const BlockModel& b) const {
 
 std::vector<double> Model::pairStiffness() const {
   std::vector<double> c(layout_->family().numBonds(), 0.0);
-  for (const BlockModel& b : blocks_)
-    b.material->pairStiffness(
-        makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon), c.data());
+  for (const BlockModel& b : blocks_) {
+    FamilyView v = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
+    if (!pointHorizon_.empty()) v.pointHorizon = pointHorizon_.data();
+    b.material->pairStiffness(v, c.data());
+  }
   return c;
 }
 

@@ -51,8 +51,10 @@ void requireFiniteLoad(const Model& model, const NodalLoad& load, double t);
 
 class Model {
  public:
+  // pointHorizon: per overlap node, its own horizon (model/PointHorizons.hpp) when the body's horizons differ; empty
+  // when every point has its block's one horizon, the same everywhere (FamilyView::pointHorizon stays null).
   Model(std::unique_ptr<DistributedLayout> layout, std::vector<double> overlapCoords, std::vector<double> overlapVolume,
-        std::vector<BlockModel> blocks);
+        std::vector<BlockModel> blocks, std::vector<double> pointHorizon = {});
 
   const DistributedLayout& layout() const { return *layout_; }
   int numOwned() const { return layout_->numOwned(); }
@@ -81,6 +83,7 @@ class Model {
   const std::vector<double>& volume() const { return volume_; }            // per overlap node
   const std::vector<double>& coordinates() const { return x_; }            // per overlap node
   const std::vector<double>& weightedVolume() const { return m_; }         // per overlap node
+  double horizonOf(int i, const BlockModel& b) const { return pointHorizon_.empty() ? b.horizon : pointHorizon_[i]; }
   const std::vector<BlockModel>& blocks() const { return blocks_; }
   // Per bond of the owned nodes: the materials' pair stiffness c_b (see Material::pairStiffness).
   std::vector<double> pairStiffness() const;
@@ -145,6 +148,8 @@ class Model {
   void bodyForce(double t, double* b) const;          // b = body force density at t (zero elsewhere)
   const std::vector<char>& prescribedMask() const { return prescribed_; }  // 3 per owned node
   bool hasBodyForce() const { return !bodyForces_.empty(); }
+  // Whether any condition moves the body: a prescribed displacement, a body force or a follower pressure.
+  bool hasConditions() const { return !prescribedLoads_.empty() || !bodyForces_.empty() || !followerLoads_.empty(); }
   // Collective: throws InputError naming the condition if a prescribed displacement or body force is not
   // finite at t at any of its nodes. Called at the start time, before each quasi-static load step and
   // when a solver finds its state non-finite; applyPrescribed and bodyForce themselves stay unchecked.
@@ -232,6 +237,7 @@ class Model {
  private:
   std::unique_ptr<DistributedLayout> layout_;
   std::vector<double> x_, volume_, m_, density_, bound_;
+  std::vector<double> pointHorizon_;  // per overlap node; empty: one horizon everywhere
   std::vector<BlockModel> blocks_;
   StateStore state_;
   bool hasDamage_ = false;

@@ -15,6 +15,7 @@
 #include "discretization/NodeSets.hpp"
 #include "model/DistributedCloud.hpp"
 #include "model/LoadedField.hpp"
+#include "model/PointHorizons.hpp"
 #include "model/PressureLoad.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/Partition.hpp"
@@ -25,7 +26,7 @@ namespace {
 
 struct BlockSpec {
   std::string name, materialName;
-  double horizon;
+  double horizon;                                       // 0 for an expression (known per point only)
   std::shared_ptr<const Material> material;
   std::vector<std::shared_ptr<const FieldOperator>> fieldOperators;
   double criticalStretch = 0.0;  // 0: no damage model
@@ -34,6 +35,8 @@ struct BlockSpec {
   std::shared_ptr<const Expression> stretchOfTime;      // Time Dependent Critical Stretch
   double bulkModulus = 0.0;                             // K of the material; 0: it has no moduli (Diffusion)
   std::shared_ptr<const BondFilters> initialBreaks;     // Initial Damage
+  std::shared_ptr<const Expression> horizonExpression;  // Horizon in x, y, z; null: the constant horizon
+  std::string group;                                    // its Blocks sub-list, for messages
 };
 
 // The bulk modulus of a material: its `Bulk Modulus`, or from two of Peridigm's elastic constants
@@ -102,12 +105,24 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
                          "own thermal strain, so give the same value or leave it out");
       }
     }
+    if (g.horizonExpression && !materialOf(g.material)->takesPointHorizon())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Horizon' is an expression in x, y, z (a horizon that varies by "
+                       "point); material '" + g.material + "' (" + deck.material(g.material).entry->model +
+                       ") takes one horizon per block, as in Peridigm: only the correspondence models take a horizon per point");
+    if (g.horizonExpression && operators.count(g.material) && !operators[g.material].empty())
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Horizon' is an expression in x, y, z; the heat terms of "
+                       "material '" + g.material + "' (conduction, heat capacity, plastic heating) take one horizon per block");
+    if (g.horizonExpression && deck.contact.given)
+      throw InputError(deck.file + ": Blocks/" + g.name + ": 'Horizon' is an expression in x, y, z; contact takes one "
+                       "horizon per block (as Peridigm: variable horizon not supported by contact)");
     if (g.ndoBand && !materialOf(g.material)->supportsSurfaceBand())
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Surface Correction' = 'NDO Band': material '" +
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") has no first Piola stress; the band works with the correspondence models");
     BlockSpec spec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material), {},
                    d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
+    spec.horizonExpression = g.horizonExpression;
+    spec.group = g.name;
     if (operators.count(g.material)) spec.fieldOperators = operators[g.material];
     if (d) spec.stretchOfTime = d->stretchOfTime;
     spec.bulkModulus = bulkModulusOf(deck.material(g.material));
@@ -143,7 +158,7 @@ std::array<double, 3> quickGridBox(const DiscretizationSpec& d, double horizon) 
 void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
   if (cloud.spacing <= 0) return;  // not a uniform grid: the spacing is unknown
   for (const BlockGroupSpec& g : deck.blocks)
-    if (g.horizon < cloud.spacing) {
+    if (!g.horizonExpression && g.horizon < cloud.spacing) {
       char msg[200];
       std::snprintf(msg, sizeof msg, ": Horizon = %g is smaller than the grid spacing %g: no point would have a bond",
                     g.horizon, cloud.spacing);
@@ -151,22 +166,27 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
     }
 }
 
-// A two-phase (gather-form) model takes a bond's reaction with the bond's own omega and partial volume,
-// which holds when both ends have the same horizon (Material::exchangeWidth): such a model shares a body
-// only with blocks of its own horizon.
+// A two-phase (gather-form) model takes a bond's reaction with the bond's own omega and partial volume, which
+// holds where both ends have the same horizon; the correspondence models sum the other points' bonds one-pass
+// (CorrespondenceMaterial::computeForce). The NDO band and Maximum Principal Stress damage need the gather form at
+// every point: a block with either shares a body only with blocks of its own constant horizon.
 void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, const std::string& inputFile) {
   const BlockSpec* gather = nullptr;
   for (const auto& kv : blocks)
-    if (kv.second.material->exchangeWidth(FamilyView{}) > 0) gather = &kv.second;
+    if (kv.second.material->exchangeWidth(FamilyView{}) > 0 && (kv.second.ndoBand || kv.second.tensileStrength > 0.0))
+      gather = &kv.second;
   if (!gather) return;
   for (const auto& kv : blocks)
-    if (kv.second.horizon != gather->horizon) {
-      char msg[300];
-      std::snprintf(msg, sizeof msg,
-                    ": Horizon = %g differs from block %s's %g; its correspondence material (%s) sums each bond's "
-                    "force from both ends and needs one horizon across the body",
-                    kv.second.horizon, gather->name.c_str(), gather->horizon, gather->materialName.c_str());
-      throw InputError(inputFile + ": Blocks/" + kv.second.name + msg);
+    if (kv.second.horizonExpression || gather->horizonExpression || kv.second.horizon != gather->horizon) {
+      const auto text = [](const BlockSpec& b) {
+        char v[64];
+        std::snprintf(v, sizeof v, "%g", b.horizon);
+        return b.horizonExpression ? "'" + b.horizonExpression->text() + "'" : std::string(v);
+      };
+      throw InputError(inputFile + ": Blocks/" + kv.second.group + ": Horizon = " + text(kv.second) + " differs from " +
+                       gather->name + "'s " + text(*gather) + "; its correspondence material (" + gather->materialName +
+                       ") with " + (gather->ndoBand ? "Surface Correction = NDO Band" : "Maximum Principal Stress damage") +
+                       " sums each bond from both ends and needs one horizon across the body");
     }
 }
 
@@ -331,6 +351,47 @@ void addConditions(const Deck& deck, Problem& pb, const std::unordered_map<int, 
   }
 }
 
+// Each owned point's horizon (model/PointHorizons.hpp) and what the builder needs of it.
+struct OwnedHorizons {
+  std::vector<double> value;        // per point of the rank's owned cloud
+  bool uniform = true;              // one value across the whole body
+  std::map<int, double> largestOf;  // expression blocks: the largest of their points' (all ranks), their fam.horizon
+};
+
+// Collective. An expression block's value <= 0 or not finite at a point is an InputError on every rank.
+OwnedHorizons ownedHorizons(const Deck& deck, const std::map<int, BlockSpec>& blocks, const PointCloud& owned,
+                            const Communicator& comm) {
+  std::map<int, HorizonRule> ruleOf;
+  for (const auto& kv : blocks)
+    ruleOf[kv.first] = {kv.second.horizon, kv.second.horizonExpression, deck.file + ": Blocks/" + kv.second.group};
+  OwnedHorizons h;
+  collectively(comm, [&] { h.value = pointHorizons(owned, ruleOf); });
+  h.uniform = uniformHorizon(h.value, comm);
+  for (const auto& kv : blocks) {  // the same blocks in the same order on every rank: one reduction each
+    if (!kv.second.horizonExpression) continue;
+    double largest = 0.0;
+    for (int p = 0; p < owned.size(); ++p)
+      if (owned.block[p] == kv.first) largest = std::max(largest, h.value[p]);
+    h.largestOf[kv.first] = comm.max(largest);
+  }
+  if (deck.discretization.boxNeighbourhood && !h.largestOf.empty())
+    throw InputError(deck.file + ": Blocks/" + blocks.at(h.largestOf.begin()->first).group + ": 'Horizon' is an "
+                     "expression in x, y, z; PdQuickGrid's box neighbourhood takes one horizon");
+  return h;
+}
+
+// Collective. Per overlap node (the layout's order, ghosts imported), each point's own horizon; empty when one value
+// holds everywhere (FamilyView::pointHorizon stays null: the constant path).
+std::vector<double> overlapHorizons(const DistributedLayout& layout, const PointCloud& owned, const OwnedHorizons& h) {
+  if (h.uniform) return {};
+  std::unordered_map<int, int> ownedIndex;
+  for (int p = 0; p < owned.size(); ++p) ownedIndex[owned.gid[p]] = p;
+  std::vector<double> mine(layout.numOwned()), overlap(layout.numOverlap(), 0.0);
+  for (int i = 0; i < layout.numOwned(); ++i) mine[i] = h.value[ownedIndex.at(layout.gids()[i])];
+  layout.importToOverlap(mine.data(), overlap.data(), 1);
+  return overlap;
+}
+
 }  // namespace
 
 Problem buildProblem(const Deck& deck, const Communicator& comm) {
@@ -353,8 +414,7 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   pb.cloud = withoutPoints(slab);
   slab = PointCloud();
   const PointCloud& cloud = pb.cloud;
-  std::vector<double> horizon(owned.size());
-  for (int p = 0; p < owned.size(); ++p) horizon[p] = blocks.at(owned.block[p]).horizon;
+  const OwnedHorizons horizon = ownedHorizons(deck, blocks, owned, comm);
   // A PdQuickGrid cloud is block 1 only: its horizon sets the box neighbourhood.
   const double h1 = blocks.count(1) ? blocks.at(1).horizon : blocks.begin()->second.horizon;
   const std::array<double, 3> box = quickGridBox(deck.discretization, h1);
@@ -363,22 +423,25 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
   rules.box = deck.discretization.boxNeighbourhood ? &box : nullptr;
   rules.omitBondsBetweenBlocks = deck.discretization.omitBondsBetweenBlocks;
   rules.filters = &deck.discretization.bondFilters;
-  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon, cloud.influence, rules);
+  auto layout = std::make_unique<DistributedLayout>(comm, owned, horizon.value, cloud.influence, rules);
   std::vector<double> x = layout->releaseCoordinates(), volume = layout->releaseVolumes();
   requireDistinctPoints(*layout, x, volume, cloud.spacing, inputFile);
   const std::vector<int>& gids = layout->gids();
   std::vector<BlockModel> blockModels;
+  std::vector<double> pointHorizon = overlapHorizons(*layout, owned, horizon);
   for (const BlockRange& r : layout->blocks()) {
     const BlockSpec& s = blocks.at(r.blockId);
+    const double blockHorizon = s.horizonExpression ? horizon.largestOf.at(r.blockId) : s.horizon;
     blockModels.push_back(
-        BlockModel{r.blockId, s.name, s.materialName, s.horizon, r.begin, r.end, s.material, s.criticalStretch,
+        BlockModel{r.blockId, s.name, s.materialName, blockHorizon, r.begin, r.end, s.material, s.criticalStretch,
                    s.ndoBand, s.tensileStrength, s.fieldOperators, s.stretchOfTime, s.initialBreaks});
     blockModels.back().bulkModulus = s.bulkModulus;
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;
   for (int i = 0; i < numOwned; ++i) localOf[gids[i]] = i;
-  pb.model = std::make_unique<Model>(std::move(layout), std::move(x), std::move(volume), std::move(blockModels));
+  pb.model = std::make_unique<Model>(std::move(layout), std::move(x), std::move(volume), std::move(blockModels),
+                                     std::move(pointHorizon));
   warnPointsWithoutBonds(*pb.model, inputFile);
 
   // Node sets (the owned points' gids in each) and boundary conditions.

@@ -220,9 +220,9 @@ double OutputManager::nodeValue(const std::string& var, int comp, int i, const s
   if (var == "Damage") return model_.state().has("Damage") ? model_.state().committed("Damage")[i] : 0.0;
   if (var == "Volume") return model_.volume()[i];
   if (var == "Radius") return std::cbrt(3.0 * model_.volume()[i] / (4.0 * M_PI));  // Peridigm's: the sphere of the volume
-  if (var == "Horizon")  // the horizon of the node's block
+  if (var == "Horizon")  // the node's own horizon (its block's, or the block's expression at the node)
     for (const BlockModel& b : model_.blocks())
-      if (i >= b.begin && i < b.end) return b.horizon;
+      if (i >= b.begin && i < b.end) return model_.horizonOf(i, b);
   // A variable some block's material computes (requireComputed) and this rank's blocks do not: 0, as at np 1
   // for the points of the other materials.
   if (isMaterialVectorField(var)) {

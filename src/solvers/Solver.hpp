@@ -64,6 +64,14 @@ class StepObserver {
                       const std::vector<double>& f) = 0;
 };
 
+// What a run starts from, for a check that depends on it. atRest: u = v = 0 at every point and nothing can set the
+// body in motion (no prescribed displacement, body force, pressure, contact, wall or field): it stays at rest up to
+// the round-off of its forces there. startTime, endTime: the solver's first and last load time.
+struct RunStart {
+  bool atRest = false;
+  double startTime = 0.0, endTime = 0.0;
+};
+
 class Solver {
  public:
   virtual ~Solver() = default;
@@ -71,6 +79,8 @@ class Solver {
   // Checks the options against the built model before any output file is opened: InputError for a
   // setting the model cannot run (every rank reaches the same verdict), warnings for doubtful ones.
   virtual void check(const Model&) const {}
+  // The same knowing what the run starts from (Simulation's call; a solver started mid-run gets the one above).
+  virtual void check(const Model& model, const RunStart&) const { check(model); }
   // u, v hold the initial state on entry (prescribed values are applied by the solver); on return they
   // hold the final state, from which a following solver (Peridigm's Solver2 after Solver1) continues.
   // times: the start time, then the end of every load step (quasi-static solvers step through them all;

@@ -29,7 +29,10 @@ class VerletSolver : public Solver {
   explicit VerletSolver(VerletOptions o) : opt_(o) {}
   static SolverEntry entry();
   std::string name() const override { return "Verlet"; }
-  void check(const Model& model) const override;  // Fixed dt against the stable step (warns or refuses)
+  // Fixed dt against the stable step (warns or refuses; a run at rest whose few steps cannot amplify round-off
+  // beyond 1e6 only warns, RunStart); the one-argument form checks as for a body in motion.
+  void check(const Model& model) const override { check(model, RunStart{}); }
+  void check(const Model& model, const RunStart& start) const override;
   void run(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
            StepObserver& observer) override;
   // Gershgorin estimate, before the safety factor; freeOnly: over the points with a free component only

@@ -11,6 +11,18 @@ periforge_check(bar_3d_correspondence_np1_vs_np2 "bar_3d_correspondence_np1;bar_
   ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_np2/bar_3d_correspondence.e
   ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_np1/bar_3d_correspondence.e ${REG}/bar/np_agreement.comp)
 
+# The same bar with a horizon that varies by point (3.015 dx, then 3.515 dx beyond the middle): the gather and the
+# one-pass sums side by side across the ranks' ghosts; np 1 and 2 agree (the sum itself: unit test PointHorizon).
+foreach(np 1 2)
+  periforge_run(bar_3d_correspondence_two_horizons_np${np} ${REG}/correspondence/bar_3d_correspondence_two_horizons.xml ${np})
+endforeach()
+periforge_check(bar_3d_correspondence_two_horizons_np1_vs_np2
+  "bar_3d_correspondence_two_horizons_np1;bar_3d_correspondence_two_horizons_np2"
+  ${PY} ${PROJECT_SOURCE_DIR}/scripts/exodiff.py
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_two_horizons_np2/bar_3d_correspondence_two_horizons.e
+  ${CMAKE_CURRENT_BINARY_DIR}/regression/bar_3d_correspondence_two_horizons_np1/bar_3d_correspondence_two_horizons.e
+  ${REG}/bar/np_agreement.comp)
+
 # Viscoplastic Correspondence cube with every point prescribed (uniaxial strain at 1e3 1/s): the time reaches
 # the material only through the solver; the centre's and the corner's histories against an independent radial
 # return (check_vp_affine.py, 1e-8). Verlet (np 1 and 2) and ADR load steps.

@@ -163,7 +163,7 @@ TEST(InputSchema, NonPositiveHorizon) {
 TEST(InputSchema, WrongTypeAndMissingRequired) {
   auto p = base();
   p->sublist("Blocks").sublist("My Block").set("Horizon", std::string("big"));
-  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "'Horizon' must be a double");
+  EXPECT_INPUT_ERROR(pf::parseDeck(*p, kFile), kFile, "Blocks/My Block/Horizon");  // an expression in x, y, z
   auto q = base();
   q->sublist("Solver").remove("Final Time");
   EXPECT_INPUT_ERROR(pf::parseDeck(*q, kFile), kFile, "missing required parameter 'Final Time'");

@@ -22,6 +22,9 @@ ROW = "".join(f"{i} 0 0 {1 if i < 3 else 3} 1.0\n" for i in range(6))
 VERLET_ALLOW = ('<Parameter name="Fixed dt" type="double" value="5.0e-8"/>',
                 '<Parameter name="Fixed dt" type="double" value="2.1e-6"/>'
                 '<Parameter name="Allow Unstable Time Step" type="bool" value="true"/>')
+# The deck's conditions as an XML comment: nothing acts on the bar.
+REST = [('<ParameterList name="Boundary Conditions">', '<!-- <ParameterList name="Boundary Conditions">'),
+        ('</ParameterList>\n  <ParameterList name="Solver">', '</ParameterList> -->\n  <ParameterList name="Solver">')]
 INITIAL_INF = ('<ParameterList name="Boundary Conditions">',
                '<ParameterList name="Boundary Conditions">\n    <ParameterList name="Kick">'
                '<Parameter name="Type" type="string" value="Initial Velocity"/>'
@@ -56,6 +59,16 @@ CASES = [
       ('<Parameter name="Node Set" type="string" value="Left Layer"/><Parameter name="Coordinate" type="string" value="y"/>',
        '<Parameter name="Node Set" type="string" value="All"/><Parameter name="Coordinate" type="string" value="y"/>')],
      None, (1, 2), True, []),
+    # A body at rest that nothing moves (the conditions commented out) has only round-off to amplify: a run of 2 steps
+    # at 10x (growth (4 r^2)^2 ~ 1.6e5 <= 1e6) runs with a warning (Peridigm's VariableHorizonParsing: 2 steps at 4.3x),
+    # its 4 steps to the deck's Final Time (2.5e10) are refused as any other.
+    ("Verlet Fixed dt 10x, body at rest, 2 steps: runs", "bar/bar_verlet.xml",
+     [('value="5.0e-8"', 'value="2.1e-6"'), *REST, ('value="1.0e-5"/>\n    <ParameterList name="Verlet">',
+                                                  'value="4.3e-6"/>\n    <ParameterList name="Verlet">')],
+     None, (1, 2), True, ["warning", "nothing moves the body and its 2 step(s)"]),
+    ("Verlet Fixed dt 10x, body at rest, 4 steps: refused", "bar/bar_verlet.xml",
+     [('value="5.0e-8"', 'value="2.1e-6"'), *REST], None, (1, 2), False,
+     ["input error", "Solver/Verlet", "Fixed dt", "Allow Unstable Time Step"]),
     ("Verlet Fixed dt 10x allowed: blows up", "bar/bar_verlet.xml",
      [VERLET_ALLOW, ('value="1.0e-5"/>\n    <ParameterList name="Verlet">', 'value="2.0e-4"/>\n    <ParameterList name="Verlet">')],
      None, (1, 2), False, ["solver failed", "Verlet: non-finite", "at step 74 (t = 0.0001554) at node 79 (0.0785, 0.0005, 0)"]),
