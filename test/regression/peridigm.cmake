@@ -204,8 +204,7 @@ set(peridigm_suite_cases
   # Peridigm's Data Loader: Fluid_Concentration read from an Exodus file, interpolated linearly in time (model/LoadedField)
   "Notched_Plate_Data_Loader Notched_Plate_Data_Loader.yaml Notched_Plate_Data_Loader Notched_Plate_Data_Loader.comp"
   # Peridigm's Construct Interfaces: its Interfaces.e (face elements between bonded elements, output/InterfaceOutput)
-  "Interfaces Interfaces.xml Interfaces Interfaces.comp")
-
+  "Interfaces Interfaces.xml Interfaces Interfaces.comp"
   # Peridigm's string Horizon, an expression in x, y, z per point (model/PointHorizons.hpp); a body at rest runs its 2
   # steps at 4.3x the stable estimate with a warning (docs/input.md, Verlet)
   "VariableHorizonParsing VariableHorizonParsing.xml VariableHorizonParsing VariableHorizonParsing.comp")
