@@ -4,6 +4,7 @@
 
 #include "DiffusionMaterial.hpp"
 #include "DruckerPragerCorrespondenceMaterial.hpp"
+#include "ElasticBondAssociatedCorrespondenceMaterial.hpp"
 #include "ElasticBondBasedMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
@@ -31,6 +32,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticPlasticCorrespondenceMaterial::needlemanEntry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
+      ElasticBondAssociatedCorrespondenceMaterial::entry(),
       DiffusionMaterial::entry(),
   };
   return entries;
