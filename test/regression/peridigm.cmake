@@ -200,7 +200,9 @@ set(peridigm_suite_cases
   # Peridigm's Linear LPS beside Elastic Partial Volume (= Elastic without element-horizon volumes, docs/materials.md)
   "LinearLPSBar LinearLPSBar.yaml LinearLPSBar LinearLPSBar.comp"
   # Peridigm's QuasiStatic 'Adaptive Load-Stepping': both steps fail, the run switches to Verlet (docs/peridigm.md)
-  "AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.xml AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.comp")
+  "AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.xml AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.comp"
+  # Peridigm's bond-associated correspondence (per-bond F, rotation and stress; the stress-integral force)
+  "ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.xml ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 2)
