@@ -2,6 +2,7 @@
 // The bond-associated correspondence kinematics and force state (Chen & Spencer 2019; Peridigm's
 // correspondence.cxx, computeBondLevelUnrotatedRateOfDeformationAndRotationTensor, computeStressIntegral and
 // BondAssociatedCorrespondenceMaterial::computeForce), per bond of one owned node. Plain arrays in, no state.
+#include "core/BondFamily.hpp"
 #include "core/Tensor3.hpp"
 
 namespace pf {
@@ -20,5 +21,10 @@ Mat3 normalProjector(const double* xi);
 // first-order gradient weight. Writes T (3 values).
 void bondForceState(const Mat3& P, const Mat3& S, const Mat3& Kinv, const double* xi, double omega, double w0,
                     double* T);
+
+// An upper bound of sum_j |df_i/du_j| per owned node for a bond-associated model whose stress moves with the
+// gradient by at most C = max(3K, 2mu) (Material::stiffnessBound): the stress-integral part through the
+// first-order weights, 4 C a^2 with a = sum omega |K^-1 xi| V_j, plus the direct part 4 C sum omega V_j / |xi|^2 / w0.
+void bondAssociatedStiffnessBound(const FamilyView& fam, double C, double* bound);
 
 }  // namespace pf

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "BondAssociatedKinematics.hpp"
-#include "CorrespondenceFields.hpp"
+#include "BondTensorFields.hpp"
 #include "CorrespondenceKinematics.hpp"
 #include "core/InputError.hpp"
 
@@ -15,36 +15,6 @@ namespace {
 
 const char* const kModel = "Elastic Bond Associated Correspondence";
 const double kTag = 7.0;  // marks a row written by this model (a neighbour of another model leaves 0)
-
-// The per-bond history, one bond field per component (StateStore bond fields are scalars, as Peridigm's).
-struct BondTensor {
-  double* trial[9];
-  const double* committed[9];
-  int n;
-  BondTensor(StateStore& s, const std::string& base, bool symmetric) : n(symmetric ? 6 : 9) {
-    for (int c = 0; c < n; ++c) {
-      const std::string name = base + (symmetric ? kSym[c] : kFull[c]);
-      trial[c] = s.trial(name), committed[c] = s.committed(name);
-    }
-  }
-  Mat3 committedAt(int b) const {
-    double v[9];
-    for (int c = 0; c < n; ++c) v[c] = committed[c][b];
-    return n == 6 ? fromSym6(v) : Mat3{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
-  }
-  void set(int b, const Mat3& a) {
-    double v[9];
-    if (n == 6) toSym6(a, v);
-    for (int c = 0; c < n; ++c) trial[c][b] = n == 6 ? v[c] : a[c];
-  }
-};
-
-void addBondSpecs(std::vector<StateSpec>& s, const std::string& base, bool symmetric, bool identity) {
-  for (int c = 0; c < (symmetric ? 6 : 9); ++c) {
-    const bool diagonal = symmetric ? c < 3 : c % 4 == 0;
-    s.push_back({base + (symmetric ? kSym[c] : kFull[c]), Location::Bond, true, false, identity && diagonal ? 1.0 : 0.0});
-  }
-}
 
 double stepLength(const FamilyView& fam, const StateStore& state, int i) {
   const double tN = state.committed("Correspondence_Time")[i];
@@ -199,7 +169,7 @@ void ElasticBondAssociatedCorrespondenceMaterial::bondPhase(const FamilyView& fa
                          "with blocks of the same model");
       const double w = bondWeight(fam, b);
       if (w == 0.0) {  // no bond (Peridigm: omega = 0 keeps the committed state)
-        Vb.set(b, Vb.committedAt(b)), Rb.set(b, Rb.committedAt(b)), taub.set(b, taub.committedAt(b));
+        Vb.keep(b), Rb.keep(b), taub.keep(b);
         continue;
       }
       double xi[3], Y[3], dY[3];
@@ -238,26 +208,8 @@ void ElasticBondAssociatedCorrespondenceMaterial::bondPhase(const FamilyView& fa
   }
 }
 
-// |dP/dH| <= max(3K, 2mu); a bond's T moves with its own P by about omega/w0 |xi|^-1 and with the stress integral
-// through phi: the same a_i = sum omega |K^-1 xi| V_j bound as the other correspondence models, plus the direct term.
 void ElasticBondAssociatedCorrespondenceMaterial::stiffnessBound(const FamilyView& fam, double* bound) const {
-  const double C = std::max(3.0 * moduli_.bulk, 2.0 * moduli_.shear);
-  for (int i = fam.begin; i < fam.end; ++i) {
-    ShapeAndGradient sg;
-    const Mat3 Kinv = tryShapeAndGradient(fam, i, fam.x, false, sg) ? sg.Kinv : Mat3{};
-    double a = 0.0, w0 = 0.0, direct = 0.0;
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
-      const int j = fam.neighbors[b];
-      const double w = bondWeight(fam, b);
-      double kx[3] = {0, 0, 0};
-      for (int r = 0; r < 3; ++r)
-        for (int s = 0; s < 3; ++s) kx[r] += Kinv[3 * r + s] * (fam.x[3 * j + s] - fam.x[3 * i + s]);
-      a += w * std::sqrt(kx[0] * kx[0] + kx[1] * kx[1] + kx[2] * kx[2]);
-      w0 += w;
-      direct += w / (fam.refLength[b] * fam.refLength[b]);
-    }
-    bound[i] = 4.0 * C * a * a + (w0 > 0.0 ? 4.0 * C * direct / w0 : 0.0);
-  }
+  bondAssociatedStiffnessBound(fam, std::max(3.0 * moduli_.bulk, 2.0 * moduli_.shear), bound);
 }
 
 // The bond-based solid with the same bulk modulus, 18 K / (pi delta^4) / |xi|: a preconditioner needs only the scale.

@@ -7,6 +7,7 @@
 #include "ElasticBondAssociatedCorrespondenceMaterial.hpp"
 #include "ElasticBondBasedMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
+#include "ElasticHypoelasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
 #include "ElasticPlasticCorrespondenceMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
@@ -33,6 +34,7 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
       ElasticBondAssociatedCorrespondenceMaterial::entry(),
+      ElasticHypoelasticCorrespondenceMaterial::entry(),
       DiffusionMaterial::entry(),
   };
   return entries;

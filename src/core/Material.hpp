@@ -89,6 +89,10 @@ class Material {
   // drivers, unit tests) computeForce is the one-pass evaluation above.
   virtual int exchangeWidth(const FamilyView& fam) const { return 0; }
   virtual void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const {}
+  // More than one exchange (Peridigm's Eulerian hypoelastic correspondence: a node's gradient needs its neighbours'
+  // Jacobians, a bond's needs both ends' gradients): completeForce is called once per round r (fam.exchangeRound),
+  // rounds before the last rewrite the owned rows, which the core imports to the ghosts before the next round.
+  virtual int exchangeRounds() const { return 1; }
   // Whether the model honours FamilyView's surface band (Surface Correction = NDO Band); a block asking for
   // it with a model that does not is refused at input.
   virtual bool supportsSurfaceBand() const { return false; }
