@@ -202,7 +202,9 @@ set(peridigm_suite_cases
   # Peridigm's QuasiStatic 'Adaptive Load-Stepping': both steps fail, the run switches to Verlet (docs/peridigm.md)
   "AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.xml AdaptiveQuasiStaticSolver AdaptiveQuasiStaticSolver.comp"
   # Peridigm's bond-associated correspondence (per-bond F, rotation and stress; the stress-integral force)
-  "ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.xml ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.comp")
+  "ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.xml ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.comp"
+  # Peridigm's semi-Lagrangian hypoelastic correspondence (gradients on the deformed bonds, J, two exchange rounds)
+  "ElasticHypoelasticCorrespondenceFullyPrescribedTension ElasticHypoelasticCorrespondenceFullyPrescribedTension.xml ElasticHypoelasticCorrespondenceFullyPrescribedTension ElasticHypoelasticCorrespondenceFullyPrescribedTension.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 2)

@@ -1,15 +1,18 @@
-// Elastic Bond Associated Correspondence (materials/ElasticBondAssociatedCorrespondenceMaterial.cpp) against closed
-// forms on a generated 11x11x11 lattice (horizon 2 dx, every family built):
+// Elastic Bond Associated Correspondence (materials/ElasticBondAssociatedCorrespondenceMaterial.cpp) and Elastic
+// Hypoelastic Correspondence (materials/ElasticHypoelasticCorrespondenceMaterial.cpp) against closed forms on a
+// generated 11x11x11 lattice (horizon 2 dx, every family built):
 //  1. an affine motion y = F x with a finite, non-symmetric F gives every node's gradient F and, through the bond map
 //     F_b = Fbar + (Y - Fbar xi) xi / |xi|^2, every interior bond's F_b = F;
 //  2. one step from the reference (no velocities: the increment from the committed positions, dF = F - I) gives each
 //     interior bond Peridigm's first-order update in closed form: L dt = (F - I) F^-1 = I - F^-1, D = sym, W = skew,
 //     R = Q(W) Peridigm's rotation increment, d = R^T D R, tau = K tr(d) I + 2 mu dev(d), sigma_b = R tau R^T;
 //  3. the same homogeneous state leaves an interior node (its whole family interior) without force;
-//  4. Gradient Order Of Accuracy other than 1 is refused with one line naming the parameter.
+//  4. (hypoelastic) the node's Velocity_Gradient and Jacobian_Determinant of that step in closed form;
+//  5. Gradient Order Of Accuracy other than 1 is refused with one line naming the parameter.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,12 +32,17 @@ using pf::operator+;
 
 constexpr double kE = 200e9, kNu = 0.3;
 
-std::unique_ptr<pf::Material> bondAssociated(double order = 1.0) {
-  return pf::makeMaterial("Elastic Bond Associated Correspondence",
-                          {{"Density", 7800.0}, {"Young's Modulus", kE}, {"Poisson's Ratio", kNu},
-                           {"Gradient Order Of Accuracy", order}},
-                          {});
+const char* const kBondAssociated = "Elastic Bond Associated Correspondence";
+const char* const kHypoelastic = "Elastic Hypoelastic Correspondence";
+
+std::unique_ptr<pf::Material> model(const std::string& name, double order = 1.0) {
+  std::map<std::string, double> v = {{"Density", 7800.0}, {"Young's Modulus", kE}, {"Poisson's Ratio", kNu},
+                                     {"Gradient Order Of Accuracy", order}};
+  if (name == kHypoelastic) v["Actual Horizon"] = 2e-3;
+  return pf::makeMaterial(name, v, {});
 }
+
+std::unique_ptr<pf::Material> bondAssociated(double order = 1.0) { return model(kBondAssociated, order); }
 
 // A finite, non-symmetric homogeneous gradient with det F > 0 (a stretch, shears of every sign and a turn).
 const pf::Mat3 kF = {1.08, 0.13, -0.05, -0.07, 0.95, 0.11, 0.04, -0.09, 1.12};
@@ -56,6 +64,7 @@ void evaluateAffine(const pf::Material& mat, AffineRun& r) {
   r.f.assign(r.y.size(), 0.0);
   pf::FamilyView v = r.L.view();
   v.time = 1.0, v.startTime = 0.0;
+  v.unitInfluence = true;  // Influence One, as the model run sets it for the deck's default
   mat.computeForce(v, r.y.data(), r.st, r.f.data());  // no exchange buffer: both phases in one call
 }
 
@@ -101,8 +110,8 @@ TEST(BondAssociatedCorrespondence, AffineMotionGivesEveryBondTheGradient) {
   EXPECT_LT(worst, 1e-10 * maxAbs(kF));
 }
 
-TEST(BondAssociatedCorrespondence, OneStepStressIsPeridigmsFirstOrderUpdate) {
-  auto mat = bondAssociated();
+void checkOneStepStress(const std::string& name) {
+  auto mat = model(name);
   AffineRun r;
   evaluateAffine(*mat, r);
   pf::Mat3 Finv;
@@ -140,8 +149,14 @@ TEST(BondAssociatedCorrespondence, OneStepStressIsPeridigmsFirstOrderUpdate) {
   EXPECT_LT(worst, 1e-10 * maxAbs(expected));
 }
 
-TEST(BondAssociatedCorrespondence, HomogeneousStateLeavesInteriorNodesUnloaded) {
-  auto mat = bondAssociated();
+TEST(BondAssociatedCorrespondence, OneStepStressIsPeridigmsFirstOrderUpdate) { checkOneStepStress(kBondAssociated); }
+
+// The semi-Lagrangian model reaches the same closed form: its gradient of the step's displacement u = (I - F^-1) y on
+// the deformed bonds is L dt = I - F^-1 exactly, the bond map of an affine field returns it, and the update is the same.
+TEST(HypoelasticCorrespondence, OneStepStressIsPeridigmsFirstOrderUpdate) { checkOneStepStress(kHypoelastic); }
+
+void checkInteriorEquilibrium(const std::string& name) {
+  auto mat = model(name);
   AffineRun r;
   evaluateAffine(*mat, r);
   // The force scale: one bond's P xi / |xi|^2 / w0 V_j summed over a family, ~ |P| / dx.
@@ -157,12 +172,38 @@ TEST(BondAssociatedCorrespondence, HomogeneousStateLeavesInteriorNodesUnloaded) 
   EXPECT_GT(checked, 0);
 }
 
+TEST(BondAssociatedCorrespondence, HomogeneousStateLeavesInteriorNodesUnloaded) { checkInteriorEquilibrium(kBondAssociated); }
+TEST(HypoelasticCorrespondence, HomogeneousStateLeavesInteriorNodesUnloaded) { checkInteriorEquilibrium(kHypoelastic); }
+
+// The node-level outputs of the semi-Lagrangian model for the same step (t = 1): Velocity_Gradient = I - F^-1 (the
+// gradient of u = (I - F^-1) y over the unit step) and Jacobian_Determinant = J_N (1 + tr(L dt)) = 1 + tr(I - F^-1).
+TEST(HypoelasticCorrespondence, VelocityGradientAndJacobianOfAnAffineStep) {
+  auto mat = model(kHypoelastic);
+  AffineRun r;
+  evaluateAffine(*mat, r);
+  pf::Mat3 Finv;
+  pf::inverse(kF, Finv);
+  const pf::Mat3 L = pf::identity3() - Finv;
+  pf::TensorField Ls(r.st, "Velocity_Gradient", false);
+  const double* J = r.st.trial("Jacobian_Determinant");
+  double worstL = 0.0, worstJ = 0.0;
+  for (int i = 0; i < r.L.numQueries; ++i) {
+    for (int c = 0; c < 9; ++c) worstL = std::max(worstL, std::fabs(Ls.trial[c][i] - L[c]));
+    worstJ = std::max(worstJ, std::fabs(J[i] - (1.0 + pf::trace(L))));
+  }
+  // M^-1 and the sums over ~33 deformed bonds: round-off of a few 1e-16 relative to |L| ~ 0.1 and J ~ 1.
+  EXPECT_LT(worstL, 1e-10 * maxAbs(L));
+  EXPECT_LT(worstJ, 1e-10);
+}
+
 TEST(BondAssociatedCorrespondence, HigherGradientOrderIsRefused) {
-  try {
-    bondAssociated(2.0);
-    FAIL() << "order 2 accepted";
-  } catch (const pf::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("'Gradient Order Of Accuracy'"), std::string::npos) << e.what();
+  for (const char* name : {kBondAssociated, kHypoelastic}) {
+    try {
+      model(name, 2.0);
+      FAIL() << name << ": order 2 accepted";
+    } catch (const pf::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("'Gradient Order Of Accuracy'"), std::string::npos) << e.what();
+    }
   }
 }
 
