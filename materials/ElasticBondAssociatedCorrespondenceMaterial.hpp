@@ -30,6 +30,7 @@ class ElasticBondAssociatedCorrespondenceMaterial : public Material {
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
   void enableOutput(const std::string& name) const override;
+  std::string exchangeLayout() const override { return "bond-associated"; }
   bool wantsVelocity() const override { return true; }
   // Without velocities (the quasi-static solvers) F-dot dt is the step's increment from the committed positions.
   bool wantsCommittedPositions() const override { return true; }

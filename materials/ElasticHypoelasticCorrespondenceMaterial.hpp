@@ -33,6 +33,7 @@ class ElasticHypoelasticCorrespondenceMaterial : public Material {
   void stiffnessBound(const FamilyView& fam, double* bound) const override;
   void pairStiffness(const FamilyView& fam, double* c) const override;
   void enableOutput(const std::string& name) const override;
+  std::string exchangeLayout() const override { return "hypoelastic"; }
   bool wantsVelocity() const override { return true; }
   bool wantsCommittedPositions() const override { return true; }  // without velocities: the step's increment
   double density() const override { return density_; }

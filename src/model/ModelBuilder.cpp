@@ -135,7 +135,13 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
 void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, const std::string& inputFile) {
   const BlockSpec* gather = nullptr;
   for (const auto& kv : blocks)
-    if (kv.second.material->exchangeWidth(FamilyView{}) > 0) gather = &kv.second;
+    if (kv.second.material->exchangeWidth(FamilyView{}) > 0) {
+      if (gather && gather->material->exchangeLayout() != kv.second.material->exchangeLayout())
+        throw InputError(inputFile + ": Blocks/" + kv.second.name + ": its material (" + kv.second.materialName +
+                         ") and block " + gather->name + "'s (" + gather->materialName +
+                         ") pass different per-point rows between neighbours; one body takes only one of them");
+      gather = &kv.second;
+    }
   if (!gather) return;
   for (const auto& kv : blocks)
     if (kv.second.horizon != gather->horizon) {
