@@ -16,9 +16,10 @@ namespace {
 const char* const kModel = "Elastic Bond Associated Correspondence";
 const double kTag = 7.0;  // marks a row written by this model (a neighbour of another model leaves 0)
 
-double stepLength(const FamilyView& fam, const StateStore& state, int i) {
-  const double tN = state.committed("Correspondence_Time")[i];
-  return fam.time - (std::isnan(tN) ? fam.startTime : tN);
+// The time since node i's last commit (Correspondence_Time; FamilyView::startTime before any). timeN: its committed
+// array, looked up once per call.
+double stepLength(const FamilyView& fam, const double* timeN, int i) {
+  return fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
 }
 
 Mat3 rowTensor(const double* row) { return Mat3{row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]}; }
@@ -115,10 +116,13 @@ void ElasticBondAssociatedCorrespondenceMaterial::nodePhase(const FamilyView& fa
   TensorField Fs(state, "Deformation_Gradient", false), Rs(state, "Rotation_Tensor", false),
       Vs(state, "Left_Stretch_Tensor", false), taus(state, "Unrotated_Cauchy_Stress", true);
   double* vm = state.trial("Von_Mises_Stress");
+  const double* timeN = state.committed("Correspondence_Time");
+  // The optional outputs: the fields always exist, written only when an output asks (enableOutput).
+  TensorField rate(state, "Unrotated_Rate_Of_Deformation", true), cauchy(state, "Cauchy_Stress", true);
   double* time = state.trial("Correspondence_Time");
   const double* ref = fam.yN ? fam.yN : fam.x;  // the committed positions (the reference before the first commit)
   for (int i = fam.begin; i < fam.end; ++i) {
-    const double dt = stepLength(fam, state, i);
+    const double dt = stepLength(fam, timeN, i);
     time[i] = fam.time;
     const ShapeAndGradient sg = shapeAndGradient(fam, i, y, false);
     requirePositiveJacobian(fam, i, y, sg.F);
@@ -128,11 +132,8 @@ void ElasticBondAssociatedCorrespondenceMaterial::nodePhase(const FamilyView& fa
     const Mat3 tau = taus.committedAt(i) + elasticIncrement(pu.dUnrot);
     Fs.set(i, sg.F), Rs.set(i, pu.R), Vs.set(i, pu.V), taus.set(i, tau);
     vm[i] = vonMises(tau);
-    if (rateWanted_) {
-      TensorField rate(state, "Unrotated_Rate_Of_Deformation", true);
-      rate.set(i, dt > 0.0 ? (1.0 / dt) * pu.dUnrot : rate.committedAt(i));
-    }
-    if (cauchyWanted_) TensorField(state, "Cauchy_Stress", true).set(i, mul(pu.R, mulNT(tau, pu.R)));
+    if (rateWanted_) rate.set(i, dt > 0.0 ? (1.0 / dt) * pu.dUnrot : rate.committedAt(i));
+    if (cauchyWanted_) cauchy.set(i, mul(pu.R, mulNT(tau, pu.R)));
     double w0 = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) w0 += bondWeight(fam, b);
     double* row = rows + static_cast<std::size_t>(stride) * i;
@@ -150,13 +151,14 @@ void ElasticBondAssociatedCorrespondenceMaterial::bondPhase(const FamilyView& fa
                                                             const double* rows, int stride, double* force) const {
   BondTensor Vb(state, "Bond_Left_Stretch_Tensor", false), Rb(state, "Bond_Rotation_Tensor", false),
       taub(state, "Bond_Unrotated_Cauchy_Stress", true);
+  const double* timeN = state.committed("Correspondence_Time");
   const double* ref = fam.yN ? fam.yN : fam.x;
   std::vector<Mat3> P;
   for (int i = fam.begin; i < fam.end; ++i) {
     const double* ri = rows + static_cast<std::size_t>(stride) * i;
     const Mat3 Fi = rowTensor(ri + kRowF), dFi = rowTensor(ri + kRowDF), Kinv = rowTensor(ri + kRowKinv);
     const double w0 = ri[kRowW0];
-    const double dt = fam.velocity ? stepLength(fam, state, i) : 0.0;
+    const double dt = fam.velocity ? stepLength(fam, timeN, i) : 0.0;
     const int first = fam.offsets[i], last = fam.offsets[i + 1];
     P.assign(static_cast<std::size_t>(last - first), Mat3{});
     Mat3 S{};

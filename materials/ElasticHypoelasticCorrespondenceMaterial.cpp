@@ -16,9 +16,10 @@ namespace {
 const char* const kModel = "Elastic Hypoelastic Correspondence";
 const double kTag = 11.0;  // marks a row written by this model
 
-double stepLength(const FamilyView& fam, const StateStore& state, int i) {
-  const double tN = state.committed("Correspondence_Time")[i];
-  return fam.time - (std::isnan(tN) ? fam.startTime : tN);
+// The time since node i's last commit (Correspondence_Time; FamilyView::startTime before any). timeN: its committed
+// array, looked up once per call.
+double stepLength(const FamilyView& fam, const double* timeN, int i) {
+  return fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
 }
 
 Mat3 rowTensor(const double* row) { return Mat3{row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]}; }
@@ -153,9 +154,12 @@ void ElasticHypoelasticCorrespondenceMaterial::nodePhase(const FamilyView& fam, 
   const double* JN = state.committed("Jacobian_Determinant");
   double* J = state.trial("Jacobian_Determinant");
   double* vm = state.trial("Von_Mises_Stress");
+  const double* timeN = state.committed("Correspondence_Time");
+  // The optional outputs: the fields always exist, written only when an output asks (enableOutput).
+  TensorField rate(state, "Unrotated_Rate_Of_Deformation", true), cauchy(state, "Cauchy_Stress", true);
   const Motion m = motionOf(fam, y);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const double dt = stepLength(fam, state, i);
+    const double dt = stepLength(fam, timeN, i);
     Mat3 M{};
     double w0 = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
@@ -198,11 +202,8 @@ void ElasticHypoelasticCorrespondenceMaterial::nodePhase(const FamilyView& fam, 
     const Mat3 tau = taus.committedAt(i) + elasticIncrement(pu.dUnrot);
     Rs.set(i, pu.R), Vs.set(i, pu.V), taus.set(i, tau);
     vm[i] = vonMises(tau);
-    if (rateWanted_) {
-      TensorField rate(state, "Unrotated_Rate_Of_Deformation", true);
-      rate.set(i, dt > 0.0 ? (1.0 / dt) * pu.dUnrot : rate.committedAt(i));
-    }
-    if (cauchyWanted_) TensorField(state, "Cauchy_Stress", true).set(i, mul(pu.R, mulNT(tau, pu.R)));
+    if (rateWanted_) rate.set(i, dt > 0.0 ? (1.0 / dt) * pu.dUnrot : rate.committedAt(i));
+    if (cauchyWanted_) cauchy.set(i, mul(pu.R, mulNT(tau, pu.R)));
     double* row = rows + static_cast<std::size_t>(stride) * i;
     std::copy(Ldt.begin(), Ldt.end(), row + kRowLdt);
     std::copy(Minv.begin(), Minv.end(), row + kRowMinv);
@@ -216,13 +217,14 @@ void ElasticHypoelasticCorrespondenceMaterial::bondPhase(const FamilyView& fam, 
                                                          const double* rows, int stride, double* force) const {
   BondTensor Vb(state, "Bond_Left_Stretch_Tensor", false), Rb(state, "Bond_Rotation_Tensor", false),
       taub(state, "Bond_Unrotated_Cauchy_Stress", true);
+  const double* timeN = state.committed("Correspondence_Time");
   const Motion m = motionOf(fam, y);
   std::vector<Mat3> sigma;
   for (int i = fam.begin; i < fam.end; ++i) {
     const double* ri = rows + static_cast<std::size_t>(stride) * i;
     const Mat3 Ldti = rowTensor(ri + kRowLdt), Minv = rowTensor(ri + kRowMinv);
     const double w0 = ri[kRowW0], Ji = ri[kRowJ];
-    const double scale = m.v ? stepLength(fam, state, i) : 1.0;  // velocity difference -> its increment
+    const double scale = m.v ? stepLength(fam, timeN, i) : 1.0;  // velocity difference -> its increment
     const int first = fam.offsets[i], last = fam.offsets[i + 1];
     sigma.assign(static_cast<std::size_t>(last - first), Mat3{});
     Mat3 S{};
