@@ -111,8 +111,8 @@ Mat3 ElasticHypoelasticCorrespondenceMaterial::elasticIncrement(const Mat3& de) 
 void ElasticHypoelasticCorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
                                                             double* force) const {
   if (!fam.unitInfluence)
-    throw InputError(std::string(kModel) + ": Peridigm evaluates omega on the deformed bond; only the influence "
-                     "function One (every omega = 1) is implemented");
+    throw InputError(std::string(kModel) + ": 'Influence Function' must be One (every omega = 1): Peridigm evaluates "
+                     "omega on the deformed bond with 'Actual Horizon', which is not implemented");
   if (fam.exchange) {
     jacobianPhase(fam, state, fam.exchange, fam.exchangeStride);
     return;

@@ -6,7 +6,9 @@
 //  2. one step from the reference (no velocities: the increment from the committed positions, dF = F - I) gives each
 //     interior bond Peridigm's first-order update in closed form: L dt = (F - I) F^-1 = I - F^-1, D = sym, W = skew,
 //     R = Q(W) Peridigm's rotation increment, d = R^T D R, tau = K tr(d) I + 2 mu dev(d), sigma_b = R tau R^T;
-//  3. the same homogeneous state leaves an interior node (its whole family interior) without force;
+//  3. the same homogeneous state leaves an interior node (its whole family interior) without force (the bond sums
+//     cancel by the family's point symmetry: a guard on the assembly, e.g. a bond weighted with the wrong end's w0,
+//     J or volume, not a closed form);
 //  4. (hypoelastic) the node's Velocity_Gradient and Jacobian_Determinant of that step in closed form;
 //  5. Gradient Order Of Accuracy other than 1 is refused with one line naming the parameter.
 #include <gtest/gtest.h>
