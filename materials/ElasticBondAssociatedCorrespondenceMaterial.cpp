@@ -36,8 +36,8 @@ ElasticBondAssociatedCorrespondenceMaterial::ElasticBondAssociatedCorrespondence
     : moduli_(elasticModuliFrom(in)), density_(in.get("Density")) {
   // Peridigm's higher orders (computeLagrangianGradientWeights with polynomial moments) are not implemented.
   if (in.get("Gradient Order Of Accuracy") != 1.0)
-    throw InputError(in.where() + ": 'Gradient Order Of Accuracy' = " + std::to_string(in.get("Gradient Order Of Accuracy")) +
-                     ": only 1 is implemented");
+    throw InputError(in.where() + ": 'Gradient Order Of Accuracy' = " +
+                     std::to_string(static_cast<long>(in.get("Gradient Order Of Accuracy"))) + ": only 1 is implemented");
 }
 
 MaterialEntry ElasticBondAssociatedCorrespondenceMaterial::entry() {

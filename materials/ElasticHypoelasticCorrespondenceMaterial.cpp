@@ -47,8 +47,8 @@ double partialVolume(const FamilyView& fam, int b) { return fam.fraction ? fam.f
 ElasticHypoelasticCorrespondenceMaterial::ElasticHypoelasticCorrespondenceMaterial(const MaterialInput& in)
     : moduli_(elasticModuliFrom(in)), density_(in.get("Density")) {
   if (in.get("Gradient Order Of Accuracy") != 1.0)
-    throw InputError(in.where() + ": 'Gradient Order Of Accuracy' = " + std::to_string(in.get("Gradient Order Of Accuracy")) +
-                     ": only 1 is implemented");
+    throw InputError(in.where() + ": 'Gradient Order Of Accuracy' = " +
+                     std::to_string(static_cast<long>(in.get("Gradient Order Of Accuracy"))) + ": only 1 is implemented");
 }
 
 MaterialEntry ElasticHypoelasticCorrespondenceMaterial::entry() {
