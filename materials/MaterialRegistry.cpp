@@ -4,8 +4,10 @@
 
 #include "DiffusionMaterial.hpp"
 #include "DruckerPragerCorrespondenceMaterial.hpp"
+#include "ElasticBondAssociatedCorrespondenceMaterial.hpp"
 #include "ElasticBondBasedMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
+#include "ElasticHypoelasticCorrespondenceMaterial.hpp"
 #include "ElasticMaterial.hpp"
 #include "ElasticPlasticCorrespondenceMaterial.hpp"
 #include "ElasticPlasticMaterial.hpp"
@@ -33,6 +35,8 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticPlasticCorrespondenceMaterial::needlemanEntry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
+      ElasticBondAssociatedCorrespondenceMaterial::entry(),
+      ElasticHypoelasticCorrespondenceMaterial::entry(),
       DiffusionMaterial::entry(),
   };
   return entries;

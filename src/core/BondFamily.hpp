@@ -89,6 +89,9 @@ struct FamilyView {
   // reads any row. Null: one-pass evaluation.
   double* exchange = nullptr;
   int exchangeStride = 0;
+  // Which completeForce call this is, 0 .. Material::exchangeRounds() - 1: before round r > 0 the core imports again
+  // the owned rows round r - 1 rewrote (a model whose neighbours' values depend on their own neighbours').
+  int exchangeRound = 0;
   // The model's nodal fields beside the displacement (core/FieldValues.hpp), for a material that reads one
   // (Material::fieldsRead); null when the model holds none. Every further field a material couples to comes
   // through here, not as one more member of this view.

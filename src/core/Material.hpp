@@ -89,6 +89,13 @@ class Material {
   // drivers, unit tests) computeForce is the one-pass evaluation above.
   virtual int exchangeWidth(const FamilyView& fam) const { return 0; }
   virtual void completeForce(const FamilyView& fam, const double* y, StateStore& state, double* force) const {}
+  // More than one exchange (Peridigm's Eulerian hypoelastic correspondence: a node's gradient needs its neighbours'
+  // Jacobians, a bond's needs both ends' gradients): completeForce is called once per round r (fam.exchangeRound),
+  // rounds before the last rewrite the owned rows, which the core imports to the ghosts before the next round.
+  virtual int exchangeRounds() const { return 1; }
+  // What a row holds, for the models whose rows a neighbour reads: blocks of a body whose rows differ (a plain
+  // correspondence model beside a bond-associated one) are refused, as neither could read the other's rows.
+  virtual std::string exchangeLayout() const { return "correspondence"; }
   // Whether the model honours FamilyView's surface band (Surface Correction = NDO Band); a block asking for
   // it with a model that does not is refused at input.
   virtual bool supportsSurfaceBand() const { return false; }

@@ -42,7 +42,7 @@ bool isGlobalField(const std::string& name) { return listed(globalFields(), name
 const std::vector<std::string>& tensorFields() {
   static const std::vector<std::string> v = {"Deformation_Gradient", "Shape_Tensor_Inverse", "Left_Stretch_Tensor",
                                              "Rotation_Tensor", "Unrotated_Rate_Of_Deformation", "Cauchy_Stress",
-                                             "Unrotated_Cauchy_Stress"};
+                                             "Unrotated_Cauchy_Stress", "Velocity_Gradient"};
   return v;
 }
 

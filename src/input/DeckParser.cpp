@@ -112,8 +112,12 @@ Deck parseDeck(const PL& p, const std::string& file, const std::string& director
   deck.directory = directory;
   const ParameterSpec maxMemory = ParameterSpec::real(
       "Maximum Memory", "bytes the whole run may use (all ranks); default: the machine's MemAvailable").positive();
+  // Peridigm's switch for its first Eulerian hypoelastic correspondence (2021); its current code reads it nowhere
+  // (the model allocates its own fields), so its decks' value changes nothing here either.
+  const ParameterSpec hypoelastic = ParameterSpec::flag(
+      "Enable Bond-Associated Hypoelastic Model", "accepted and ignored, as by Peridigm since 2021");
   const ParameterValues top =
-      readList(p, {ParameterSpec::flag("Verbose"), maxMemory}, topLists(p, file), file, "top level");
+      readList(p, {ParameterSpec::flag("Verbose"), maxMemory, hypoelastic}, topLists(p, file), file, "top level");
   deck.verbose = top.get("Verbose", 0.0) != 0.0;
   deck.maxMemory = top.get("Maximum Memory", 0.0);
   deck.solvers = solvers(p, file);

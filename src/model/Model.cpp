@@ -182,14 +182,24 @@ void Model::forceAtOverlapPositions(double* f) {
 }
 
 // Phase 2 of a two-phase evaluation (Material::exchangeWidth): the owned rows the models wrote go to the
-// ghosts, then each model adds the force of its owned nodes. completeForce only sums (no constitutive
-// update), so nothing here fails on one rank only.
+// ghosts, then each model adds the force of its owned nodes. A bond-associated model updates each bond's stress
+// here (it needs both ends' rows), which may fail on one rank only: agreed on collectively, as phase 1.
 void Model::exchangeAndComplete(const double* y, bool onlyFieldReaders) {
-  std::copy(exchange_.begin(), exchange_.begin() + static_cast<long>(exchangeOwned_.size()), exchangeOwned_.begin());
-  layout_->importToOverlap(exchangeOwned_.data(), exchange_.data(), exchangeWidth_);
-  for (const BlockModel& b : blocks_)
-    if (b.material->exchangeWidth(blockView(b)) > 0 && (!onlyFieldReaders || readsField(b)))
-      b.material->completeForce(view(b), y, state_, fOverlap_.data());
+  int rounds = 1;
+  for (const BlockModel& b : blocks_) rounds = std::max(rounds, b.material->exchangeRounds());
+  for (int r = 0; r < rounds; ++r) {
+    std::copy(exchange_.begin(), exchange_.begin() + static_cast<long>(exchangeOwned_.size()), exchangeOwned_.begin());
+    layout_->importToOverlap(exchangeOwned_.data(), exchange_.data(), exchangeWidth_);
+    collectively(layout_->comm(), [&] {
+      for (const BlockModel& b : blocks_)
+        if (b.material->exchangeWidth(blockView(b)) > 0 && b.material->exchangeRounds() > r &&
+            (!onlyFieldReaders || readsField(b))) {
+          FamilyView v = view(b);
+          v.exchangeRound = r;
+          b.material->completeForce(v, y, state_, fOverlap_.data());
+        }
+    });
+  }
 }
 
 bool Model::readsField(const BlockModel& b) { return !b.material->fieldsRead().empty(); }

@@ -172,6 +172,17 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
 // every point: a block with either shares a body only with blocks of its own constant horizon.
 void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, const std::string& inputFile) {
   const BlockSpec* gather = nullptr;
+  {
+    const BlockSpec* first = nullptr;  // one body takes one layout of per-point rows (bond-associated or not)
+    for (const auto& kv : blocks) {
+      if (kv.second.material->exchangeWidth(FamilyView{}) == 0) continue;
+      if (first && first->material->exchangeLayout() != kv.second.material->exchangeLayout())
+        throw InputError(inputFile + ": Blocks/" + kv.second.name + ": its material (" + kv.second.materialName +
+                         ") and block " + first->name + "'s (" + first->materialName +
+                         ") pass different per-point rows between neighbours; one body takes only one of them");
+      if (!first) first = &kv.second;
+    }
+  }
   for (const auto& kv : blocks)
     if (kv.second.material->exchangeWidth(FamilyView{}) > 0 && (kv.second.ndoBand || kv.second.tensileStrength > 0.0))
       gather = &kv.second;

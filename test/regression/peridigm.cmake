@@ -207,7 +207,11 @@ set(peridigm_suite_cases
   "Interfaces Interfaces.xml Interfaces Interfaces.comp"
   # Peridigm's string Horizon, an expression in x, y, z per point (model/PointHorizons.hpp); a body at rest runs its 2
   # steps at 4.3x the stable estimate with a warning (docs/input.md, Verlet)
-  "VariableHorizonParsing VariableHorizonParsing.xml VariableHorizonParsing VariableHorizonParsing.comp")
+  "VariableHorizonParsing VariableHorizonParsing.xml VariableHorizonParsing VariableHorizonParsing.comp"
+  # Peridigm's bond-associated correspondence (per-bond F, rotation and stress; the stress-integral force)
+  "ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.xml ElasticBondAssociatedCorrespondenceFullyPrescribedTension ElasticBondAssociatedCorrespondenceFullyPrescribedTension.comp"
+  # Peridigm's semi-Lagrangian hypoelastic correspondence (gradients on the deformed bonds, J, two exchange rounds)
+  "ElasticHypoelasticCorrespondenceFullyPrescribedTension ElasticHypoelasticCorrespondenceFullyPrescribedTension.xml ElasticHypoelasticCorrespondenceFullyPrescribedTension ElasticHypoelasticCorrespondenceFullyPrescribedTension.comp")
 foreach(entry ${peridigm_suite_cases})
   peridigm_case_fields("${entry}")
   foreach(np 2)

@@ -401,6 +401,15 @@ CASES = [
        '<Parameter name="Material Model" type="string" value="Diffusion"/>'
        '<Parameter name="Coefficient" type="double" value="1.0"/></ParameterList>')],
      ["Solver", "force model"]),
+    ("bond-associated correspondence with a higher gradient order",
+     [('<Parameter name="Material Model" type="string" value="Elastic"/>',
+       '<Parameter name="Material Model" type="string" value="Elastic Bond Associated Correspondence"/>'
+       '<Parameter name="Gradient Order Of Accuracy" type="int" value="2"/>')],
+     ["Materials/Steel", "Gradient Order Of Accuracy"]),
+    ("hypoelastic correspondence without its Actual Horizon",
+     [('<Parameter name="Material Model" type="string" value="Elastic"/>',
+       '<Parameter name="Material Model" type="string" value="Elastic Hypoelastic Correspondence"/>')],
+     ["Materials/Steel", "Actual Horizon"]),
 ]
 
 

@@ -1,0 +1,43 @@
+#pragma once
+// Per-bond tensor history of the bond-associated correspondence models: one bond field per component (StateStore
+// bond fields are scalars, as Peridigm's), named base + "XX".."ZZ" (or the 6 symmetric ones, CorrespondenceFields.hpp).
+// Internal to materials/*BondAssociated* and *Hypoelastic*.
+#include <string>
+#include <vector>
+
+#include "CorrespondenceFields.hpp"
+
+namespace pf {
+
+struct BondTensor {
+  double* trial[9];
+  const double* committed[9];
+  int n;
+  BondTensor(StateStore& s, const std::string& base, bool symmetric) : n(symmetric ? 6 : 9) {
+    for (int c = 0; c < n; ++c) {
+      const std::string name = base + (symmetric ? kSym[c] : kFull[c]);
+      trial[c] = s.trial(name), committed[c] = s.committed(name);
+    }
+  }
+  Mat3 committedAt(int b) const {
+    double v[9];
+    for (int c = 0; c < n; ++c) v[c] = committed[c][b];
+    return n == 6 ? fromSym6(v) : Mat3{v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]};
+  }
+  void set(int b, const Mat3& a) {
+    double v[9];
+    if (n == 6) toSym6(a, v);
+    for (int c = 0; c < n; ++c) trial[c][b] = n == 6 ? v[c] : a[c];
+  }
+  void keep(int b) { set(b, committedAt(b)); }
+};
+
+// History bond fields of one tensor; identity: the diagonal starts at 1 (a stretch or a rotation).
+inline void addBondSpecs(std::vector<StateSpec>& s, const std::string& base, bool symmetric, bool identity) {
+  for (int c = 0; c < (symmetric ? 6 : 9); ++c) {
+    const bool diagonal = symmetric ? c < 3 : c % 4 == 0;
+    s.push_back({base + (symmetric ? kSym[c] : kFull[c]), Location::Bond, true, false, identity && diagonal ? 1.0 : 0.0});
+  }
+}
+
+}  // namespace pf
