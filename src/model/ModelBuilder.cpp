@@ -169,7 +169,8 @@ void requireHorizonsReachNeighbours(const Deck& deck, const PointCloud& cloud) {
 // A two-phase (gather-form) model takes a bond's reaction with the bond's own omega and partial volume, which
 // holds where both ends have the same horizon; the correspondence models sum the other points' bonds one-pass
 // (CorrespondenceMaterial::computeForce). The NDO band and Maximum Principal Stress damage need the gather form at
-// every point: a block with either shares a body only with blocks of its own constant horizon.
+// every point, and so do the gather-form models without a one-pass sum (bond-associated correspondence,
+// !takesPointHorizon): a block with any of them shares a body only with blocks of its own constant horizon.
 void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, const std::string& inputFile) {
   const BlockSpec* gather = nullptr;
   {
@@ -184,7 +185,8 @@ void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, 
     }
   }
   for (const auto& kv : blocks)
-    if (kv.second.material->exchangeWidth(FamilyView{}) > 0 && (kv.second.ndoBand || kv.second.tensileStrength > 0.0))
+    if (kv.second.material->exchangeWidth(FamilyView{}) > 0 &&
+        (kv.second.ndoBand || kv.second.tensileStrength > 0.0 || !kv.second.material->takesPointHorizon()))
       gather = &kv.second;
   if (!gather) return;
   for (const auto& kv : blocks)
@@ -196,7 +198,9 @@ void requireEqualHorizonsForGatherForms(const std::map<int, BlockSpec>& blocks, 
       };
       throw InputError(inputFile + ": Blocks/" + kv.second.group + ": Horizon = " + text(kv.second) + " differs from " +
                        gather->name + "'s " + text(*gather) + "; its correspondence material (" + gather->materialName +
-                       ") with " + (gather->ndoBand ? "Surface Correction = NDO Band" : "Maximum Principal Stress damage") +
+                       ") with " + (gather->ndoBand                 ? "Surface Correction = NDO Band"
+                          : gather->tensileStrength > 0.0 ? "Maximum Principal Stress damage"
+                                                          : "its gather form (no one-pass sum for a point's own horizon)") +
                        " sums each bond from both ends and needs one horizon across the body");
     }
 }
