@@ -2,6 +2,7 @@
 // Per-bond tensor history of the bond-associated correspondence models: one bond field per component (StateStore
 // bond fields are scalars, as Peridigm's), named base + "XX".."ZZ" (or the 6 symmetric ones, CorrespondenceFields.hpp).
 // Internal to materials/*BondAssociated* and *Hypoelastic*.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,30 @@ inline void addBondSpecs(std::vector<StateSpec>& s, const std::string& base, boo
     const bool diagonal = symmetric ? c < 3 : c % 4 == 0;
     s.push_back({base + (symmetric ? kSym[c] : kFull[c]), Location::Bond, true, false, identity && diagonal ? 1.0 : 0.0});
   }
+}
+
+// The state both bond-associated models keep: the node tensors Peridigm writes, the time of the last evaluation, and
+// per bond the left stretch, rotation and unrotated Cauchy stress (history: 2 x 24 doubles per bond).
+inline void addBondAssociatedSpecs(std::vector<StateSpec>& s) {
+  addTensorSpecs(s, "Unrotated_Cauchy_Stress", true, true, false);
+  addTensorSpecs(s, "Deformation_Gradient", false, true, true);
+  addTensorSpecs(s, "Rotation_Tensor", false, true, true);
+  addTensorSpecs(s, "Left_Stretch_Tensor", false, true, true);
+  addTensorSpecs(s, "Cauchy_Stress", true, true, false, false);
+  addTensorSpecs(s, "Unrotated_Rate_Of_Deformation", true, true, false);
+  s.push_back({"Von_Mises_Stress", Location::Node, false, true});
+  s.push_back({"Correspondence_Time", Location::Node, true, false, std::numeric_limits<double>::quiet_NaN()});
+  addBondSpecs(s, "Bond_Left_Stretch_Tensor", false, true);
+  addBondSpecs(s, "Bond_Rotation_Tensor", false, true);
+  addBondSpecs(s, "Bond_Unrotated_Cauchy_Stress", true, false);
+}
+
+// Hooke's law on a rate-of-deformation increment: 2 mu dev(d) + K tr(d) I.
+inline Mat3 hookeIncrement(double bulk, double shear, const Mat3& d) {
+  Mat3 s = (2.0 * shear) * deviator(d);
+  const double p = bulk * trace(d);
+  s[0] += p, s[4] += p, s[8] += p;
+  return s;
 }
 
 }  // namespace pf

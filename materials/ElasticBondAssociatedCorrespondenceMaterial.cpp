@@ -66,17 +66,7 @@ MaterialEntry ElasticBondAssociatedCorrespondenceMaterial::entry() {
 
 std::vector<StateSpec> ElasticBondAssociatedCorrespondenceMaterial::stateSpecs() const {
   std::vector<StateSpec> s;
-  addTensorSpecs(s, "Unrotated_Cauchy_Stress", true, true, false);
-  addTensorSpecs(s, "Deformation_Gradient", false, true, true);
-  addTensorSpecs(s, "Rotation_Tensor", false, true, true);
-  addTensorSpecs(s, "Left_Stretch_Tensor", false, true, true);
-  addTensorSpecs(s, "Cauchy_Stress", true, true, false, false);
-  addTensorSpecs(s, "Unrotated_Rate_Of_Deformation", true, true, false);
-  s.push_back({"Von_Mises_Stress", Location::Node, false, true});
-  s.push_back({"Correspondence_Time", Location::Node, true, false, std::numeric_limits<double>::quiet_NaN()});
-  addBondSpecs(s, "Bond_Left_Stretch_Tensor", false, true);
-  addBondSpecs(s, "Bond_Rotation_Tensor", false, true);
-  addBondSpecs(s, "Bond_Unrotated_Cauchy_Stress", true, false);
+  addBondAssociatedSpecs(s);
   return s;
 }
 
@@ -86,10 +76,7 @@ void ElasticBondAssociatedCorrespondenceMaterial::enableOutput(const std::string
 }
 
 Mat3 ElasticBondAssociatedCorrespondenceMaterial::elasticIncrement(const Mat3& de) const {
-  Mat3 s = (2.0 * moduli_.shear) * deviator(de);
-  const double p = moduli_.bulk * trace(de);
-  s[0] += p, s[4] += p, s[8] += p;
-  return s;
+  return hookeIncrement(moduli_.bulk, moduli_.shear, de);
 }
 
 void ElasticBondAssociatedCorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,

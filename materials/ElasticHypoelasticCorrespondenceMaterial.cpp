@@ -80,19 +80,9 @@ MaterialEntry ElasticHypoelasticCorrespondenceMaterial::entry() {
 
 std::vector<StateSpec> ElasticHypoelasticCorrespondenceMaterial::stateSpecs() const {
   std::vector<StateSpec> s;
-  addTensorSpecs(s, "Unrotated_Cauchy_Stress", true, true, false);
-  addTensorSpecs(s, "Deformation_Gradient", false, true, true);
-  addTensorSpecs(s, "Rotation_Tensor", false, true, true);
-  addTensorSpecs(s, "Left_Stretch_Tensor", false, true, true);
-  addTensorSpecs(s, "Cauchy_Stress", true, true, false, false);
-  addTensorSpecs(s, "Unrotated_Rate_Of_Deformation", true, true, false);
+  addBondAssociatedSpecs(s);
   addTensorSpecs(s, "Velocity_Gradient", false, true, false, false);
   s.push_back({"Jacobian_Determinant", Location::Node, true, true, 1.0});
-  s.push_back({"Von_Mises_Stress", Location::Node, false, true});
-  s.push_back({"Correspondence_Time", Location::Node, true, false, std::numeric_limits<double>::quiet_NaN()});
-  addBondSpecs(s, "Bond_Left_Stretch_Tensor", false, true);
-  addBondSpecs(s, "Bond_Rotation_Tensor", false, true);
-  addBondSpecs(s, "Bond_Unrotated_Cauchy_Stress", true, false);
   return s;
 }
 
@@ -102,10 +92,7 @@ void ElasticHypoelasticCorrespondenceMaterial::enableOutput(const std::string& n
 }
 
 Mat3 ElasticHypoelasticCorrespondenceMaterial::elasticIncrement(const Mat3& de) const {
-  Mat3 s = (2.0 * moduli_.shear) * deviator(de);
-  const double p = moduli_.bulk * trace(de);
-  s[0] += p, s[4] += p, s[8] += p;
-  return s;
+  return hookeIncrement(moduli_.bulk, moduli_.shear, de);
 }
 
 void ElasticHypoelasticCorrespondenceMaterial::computeForce(const FamilyView& fam, const double* y, StateStore& state,
