@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "BondAssociatedKinematics.hpp"
+#include "BondAssociatedCommon.hpp"
 #include "BondTensorFields.hpp"
 #include "CorrespondenceKinematics.hpp"
 #include "core/InputError.hpp"
@@ -16,52 +17,22 @@ namespace {
 const char* const kModel = "Elastic Bond Associated Correspondence";
 const double kTag = 7.0;  // marks a row written by this model (a neighbour of another model leaves 0)
 
-// The time since node i's last commit (Correspondence_Time; FamilyView::startTime before any). timeN: its committed
-// array, looked up once per call.
-double stepLength(const FamilyView& fam, const double* timeN, int i) {
-  return fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
-}
-
-Mat3 rowTensor(const double* row) { return Mat3{row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]}; }
-
-std::string pointAt(const FamilyView& fam, int i) {
-  char buf[120];
-  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", fam.x[3 * i], fam.x[3 * i + 1], fam.x[3 * i + 2]);
-  return buf;
-}
-
 }  // namespace
 
 ElasticBondAssociatedCorrespondenceMaterial::ElasticBondAssociatedCorrespondenceMaterial(const MaterialInput& in)
     : moduli_(elasticModuliFrom(in)), density_(in.get("Density")) {
-  // Peridigm's higher orders (computeLagrangianGradientWeights with polynomial moments) are not implemented.
-  if (in.get("Gradient Order Of Accuracy") != 1.0)
-    throw InputError(in.where() + ": 'Gradient Order Of Accuracy' = " +
-                     std::to_string(static_cast<long>(in.get("Gradient Order Of Accuracy"))) + ": only 1 is implemented");
+  requireFirstOrderGradients(in);
 }
 
 MaterialEntry ElasticBondAssociatedCorrespondenceMaterial::entry() {
-  using P = ParameterSpec;
-  std::vector<std::string> outputs;
-  for (const char* base : {"Unrotated_Cauchy_Stress", "Cauchy_Stress", "Unrotated_Rate_Of_Deformation"})
-    for (const char* c : kSym) outputs.push_back(std::string(base) + c);
-  outputs.push_back("Von_Mises_Stress");
-  for (const char* base : {"Deformation_Gradient", "Rotation_Tensor", "Left_Stretch_Tensor"})
-    for (const char* c : kFull) outputs.push_back(std::string(base) + c);
   return {kModel,
           "bond-associated hypoelastic correspondence solid: a deformation gradient, rotation and stress per bond, no "
           "hourglass force (Peridigm; Chen & Spencer 2019)",
-          {P::real("Density", "mass density [kg/m^3]").need().positive(),
-           P::real("Bulk Modulus", "give exactly two of the four elastic constants").positive(),
-           P::real("Shear Modulus").positive(),
-           P::real("Young's Modulus").positive(),
-           P::real("Poisson's Ratio").above(-1.0).below(0.5),
-           P::integer("Gradient Order Of Accuracy", "order of the gradient weights (Peridigm); only 1 is implemented")
-               .byDefault("1").atLeast(1)},
+          bondAssociatedParameters(),
           [](const MaterialInput& in) {
             return std::unique_ptr<Material>(new ElasticBondAssociatedCorrespondenceMaterial(in));
           },
-          outputs};
+          bondAssociatedOutputs({}, {})};
 }
 
 std::vector<StateSpec> ElasticBondAssociatedCorrespondenceMaterial::stateSpecs() const {
@@ -109,7 +80,7 @@ void ElasticBondAssociatedCorrespondenceMaterial::nodePhase(const FamilyView& fa
   double* time = state.trial("Correspondence_Time");
   const double* ref = fam.yN ? fam.yN : fam.x;  // the committed positions (the reference before the first commit)
   for (int i = fam.begin; i < fam.end; ++i) {
-    const double dt = stepLength(fam, timeN, i);
+    const double dt = bondAssociatedStepLength(fam, timeN, i);
     time[i] = fam.time;
     const ShapeAndGradient sg = shapeAndGradient(fam, i, y, false);
     requirePositiveJacobian(fam, i, y, sg.F);
@@ -145,7 +116,7 @@ void ElasticBondAssociatedCorrespondenceMaterial::bondPhase(const FamilyView& fa
     const double* ri = rows + static_cast<std::size_t>(stride) * i;
     const Mat3 Fi = rowTensor(ri + kRowF), dFi = rowTensor(ri + kRowDF), Kinv = rowTensor(ri + kRowKinv);
     const double w0 = ri[kRowW0];
-    const double dt = fam.velocity ? stepLength(fam, timeN, i) : 0.0;
+    const double dt = fam.velocity ? bondAssociatedStepLength(fam, timeN, i) : 0.0;
     const int first = fam.offsets[i], last = fam.offsets[i + 1];
     P.assign(static_cast<std::size_t>(last - first), Mat3{});
     Mat3 S{};
@@ -201,12 +172,8 @@ void ElasticBondAssociatedCorrespondenceMaterial::stiffnessBound(const FamilyVie
   bondAssociatedStiffnessBound(fam, std::max(3.0 * moduli_.bulk, 2.0 * moduli_.shear), bound);
 }
 
-// The bond-based solid with the same bulk modulus, 18 K / (pi delta^4) / |xi|: a preconditioner needs only the scale.
 void ElasticBondAssociatedCorrespondenceMaterial::pairStiffness(const FamilyView& fam, double* c) const {
-  const double d = fam.horizon;
-  const double base = 18.0 * moduli_.bulk / (3.14159265358979323846 * d * d * d * d);
-  for (int i = fam.begin; i < fam.end; ++i)
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) c[b] = base / fam.refLength[b];
+  bondAssociatedPairStiffness(fam, moduli_.bulk, c);
 }
 
 }  // namespace pf

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "BondAssociatedKinematics.hpp"
+#include "BondAssociatedCommon.hpp"
 #include "BondTensorFields.hpp"
 #include "CorrespondenceKinematics.hpp"
 #include "core/InputError.hpp"
@@ -16,19 +17,6 @@ namespace {
 const char* const kModel = "Elastic Hypoelastic Correspondence";
 const double kTag = 11.0;  // marks a row written by this model
 
-// The time since node i's last commit (Correspondence_Time; FamilyView::startTime before any). timeN: its committed
-// array, looked up once per call.
-double stepLength(const FamilyView& fam, const double* timeN, int i) {
-  return fam.time - (std::isnan(timeN[i]) ? fam.startTime : timeN[i]);
-}
-
-Mat3 rowTensor(const double* row) { return Mat3{row[0], row[1], row[2], row[3], row[4], row[5], row[6], row[7], row[8]}; }
-
-std::string pointAt(const FamilyView& fam, int i) {
-  char buf[120];
-  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", fam.x[3 * i], fam.x[3 * i + 1], fam.x[3 * i + 2]);
-  return buf;
-}
 
 // The motion the rate is taken from: the velocities where the solver gives them (then the gradient is L and
 // L dt = dt L), else the step's displacement from the committed positions (the gradient is L dt itself).
@@ -46,36 +34,25 @@ double partialVolume(const FamilyView& fam, int b) { return fam.fraction ? fam.f
 
 ElasticHypoelasticCorrespondenceMaterial::ElasticHypoelasticCorrespondenceMaterial(const MaterialInput& in)
     : moduli_(elasticModuliFrom(in)), density_(in.get("Density")) {
-  if (in.get("Gradient Order Of Accuracy") != 1.0)
-    throw InputError(in.where() + ": 'Gradient Order Of Accuracy' = " +
-                     std::to_string(static_cast<long>(in.get("Gradient Order Of Accuracy"))) + ": only 1 is implemented");
+  requireFirstOrderGradients(in);
 }
 
 MaterialEntry ElasticHypoelasticCorrespondenceMaterial::entry() {
   using P = ParameterSpec;
-  std::vector<std::string> outputs;
-  for (const char* base : {"Unrotated_Cauchy_Stress", "Cauchy_Stress", "Unrotated_Rate_Of_Deformation"})
-    for (const char* c : kSym) outputs.push_back(std::string(base) + c);
-  outputs.push_back("Von_Mises_Stress");
-  outputs.push_back("Jacobian_Determinant");
-  for (const char* base : {"Deformation_Gradient", "Rotation_Tensor", "Left_Stretch_Tensor", "Velocity_Gradient"})
-    for (const char* c : kFull) outputs.push_back(std::string(base) + c);
   return {kModel,
           "semi-Lagrangian bond-associated hypoelastic correspondence solid: gradients on the current configuration, "
           "a rotation and stress per bond (Peridigm; Behzadinasab & Foster)",
-          {P::real("Density", "mass density [kg/m^3]").need().positive(),
-           P::real("Bulk Modulus", "give exactly two of the four elastic constants").positive(),
-           P::real("Shear Modulus").positive(),
-           P::real("Young's Modulus").positive(),
-           P::real("Poisson's Ratio").above(-1.0).below(0.5),
-           P::integer("Gradient Order Of Accuracy", "order of the gradient weights (Peridigm); only 1 is implemented")
-               .byDefault("1").atLeast(1),
-           P::real("Actual Horizon",
-                   "Peridigm's horizon of the influence function on deformed bonds (the block's Horizon only builds "
-                   "the neighbour lists); with the influence function One, the only one taken, it changes nothing")
-               .need().positive()},
+          [] {
+            auto p = bondAssociatedParameters();
+            p.push_back(P::real("Actual Horizon",
+                                "Peridigm's horizon of the influence function on deformed bonds (the block's Horizon "
+                                "only builds the neighbour lists); with the influence function One, the only one "
+                                "taken, it changes nothing")
+                            .need().positive());
+            return p;
+          }(),
           [](const MaterialInput& in) { return std::unique_ptr<Material>(new ElasticHypoelasticCorrespondenceMaterial(in)); },
-          outputs};
+          bondAssociatedOutputs({"Jacobian_Determinant"}, {"Velocity_Gradient"})};
 }
 
 std::vector<StateSpec> ElasticHypoelasticCorrespondenceMaterial::stateSpecs() const {
@@ -146,7 +123,7 @@ void ElasticHypoelasticCorrespondenceMaterial::nodePhase(const FamilyView& fam, 
   TensorField rate(state, "Unrotated_Rate_Of_Deformation", true), cauchy(state, "Cauchy_Stress", true);
   const Motion m = motionOf(fam, y);
   for (int i = fam.begin; i < fam.end; ++i) {
-    const double dt = stepLength(fam, timeN, i);
+    const double dt = bondAssociatedStepLength(fam, timeN, i);
     Mat3 M{};
     double w0 = 0.0;
     for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
@@ -211,7 +188,7 @@ void ElasticHypoelasticCorrespondenceMaterial::bondPhase(const FamilyView& fam, 
     const double* ri = rows + static_cast<std::size_t>(stride) * i;
     const Mat3 Ldti = rowTensor(ri + kRowLdt), Minv = rowTensor(ri + kRowMinv);
     const double w0 = ri[kRowW0], Ji = ri[kRowJ];
-    const double scale = m.v ? stepLength(fam, timeN, i) : 1.0;  // velocity difference -> its increment
+    const double scale = m.v ? bondAssociatedStepLength(fam, timeN, i) : 1.0;  // velocity difference -> its increment
     const int first = fam.offsets[i], last = fam.offsets[i + 1];
     sigma.assign(static_cast<std::size_t>(last - first), Mat3{});
     Mat3 S{};
@@ -246,12 +223,8 @@ void ElasticHypoelasticCorrespondenceMaterial::stiffnessBound(const FamilyView& 
   bondAssociatedStiffnessBound(fam, std::max(3.0 * moduli_.bulk, 2.0 * moduli_.shear), bound);
 }
 
-// The bond-based solid with the same bulk modulus, 18 K / (pi delta^4) / |xi|: a preconditioner needs only the scale.
 void ElasticHypoelasticCorrespondenceMaterial::pairStiffness(const FamilyView& fam, double* c) const {
-  const double d = fam.horizon;
-  const double base = 18.0 * moduli_.bulk / (3.14159265358979323846 * d * d * d * d);
-  for (int i = fam.begin; i < fam.end; ++i)
-    for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) c[b] = base / fam.refLength[b];
+  bondAssociatedPairStiffness(fam, moduli_.bulk, c);
 }
 
 }  // namespace pf
