@@ -17,7 +17,7 @@ namespace pf {
 
 struct BlockSpec {
   std::string name, materialName;
-  double horizon;                                       // 0 for an expression (known per point only)
+  double horizon = 0.0;                                 // 0 for an expression (known per point only)
   std::shared_ptr<const Material> material;
   std::vector<std::shared_ptr<const FieldOperator>> fieldOperators;
   double criticalStretch = 0.0;  // 0: no damage model

@@ -284,9 +284,14 @@ void Model::setVelocity(const double* v) {
   layout_->importToOverlap(v, vOverlap_.data(), 3);
 }
 
-FamilyView Model::blockView(const BlockModel& b) const {
+FamilyView Model::referenceView(const BlockModel& b) const {
   FamilyView view = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
   if (!pointHorizon_.empty()) view.pointHorizon = pointHorizon_.data();
+  return view;
+}
+
+FamilyView Model::blockView(const BlockModel& b) const {
+  FamilyView view = referenceView(b);
   view.time = time_;
   view.startTime = startTime_;
   if (!yCommitted_.empty()) view.yN = yCommitted_.data();
@@ -303,9 +308,7 @@ FamilyView Model::blockView(const BlockModel& b) const {
 std::vector<double> Model::pairStiffness() const {
   std::vector<double> c(layout_->family().numBonds(), 0.0);
   for (const BlockModel& b : blocks_) {
-    FamilyView v = makeView(layout_->family(), b.begin, b.end, x_.data(), volume_.data(), m_.data(), b.horizon);
-    if (!pointHorizon_.empty()) v.pointHorizon = pointHorizon_.data();
-    b.material->pairStiffness(v, c.data());
+    b.material->pairStiffness(referenceView(b), c.data());
   }
   return c;
 }

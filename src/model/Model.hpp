@@ -289,7 +289,8 @@ class Model {
   // The clock applyPrescribed sets (mutable: imposing a time's conditions is what advances it).
   mutable double time_ = 0.0, startTime_ = 0.0;
   mutable bool clockStarted_ = false;
-  FamilyView blockView(const BlockModel& b) const;
+  FamilyView referenceView(const BlockModel& b) const;  // the block's reference family: points, volumes, horizons
+  FamilyView blockView(const BlockModel& b) const;      // referenceView + time, committed positions, velocity, band
 };
 
 }  // namespace pf

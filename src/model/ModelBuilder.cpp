@@ -85,8 +85,14 @@ std::map<int, BlockSpec> blockSpecs(const Deck& deck, const std::set<int>& cloud
       throw InputError(deck.file + ": Blocks/" + g.name + ": 'Surface Correction' = 'NDO Band': material '" +
                        g.material + "' (" + deck.material(g.material).entry->model +
                        ") has no first Piola stress; the band works with the correspondence models");
-    BlockSpec spec{"block_" + std::to_string(id), g.material, g.horizon, materialOf(g.material), {},
-                   d ? d->criticalStretch : 0.0, g.ndoBand, d ? d->tensileStrength : 0.0};
+    BlockSpec spec;
+    spec.name = "block_" + std::to_string(id);
+    spec.materialName = g.material;
+    spec.horizon = g.horizon;
+    spec.material = materialOf(g.material);
+    spec.criticalStretch = d ? d->criticalStretch : 0.0;
+    spec.ndoBand = g.ndoBand;
+    spec.tensileStrength = d ? d->tensileStrength : 0.0;
     spec.horizonExpression = g.horizonExpression;
     spec.group = g.name;
     if (operators.count(g.material)) spec.fieldOperators = operators[g.material];
