@@ -197,7 +197,35 @@ inline void hourglassBothEnds(const double* Y, const double* xi, const double* F
   magj = cj * dj / (refLength * len2);
 }
 
+// The weights phi_j of the linear reconstruction of a field at x_i from i's neighbours alone (i's own value not
+// used): sum phi_j = 1 and sum phi_j xi_j = 0, phi_j = a omega V_j (1 - m . xi_j) with m = K^-1 sum omega xi V_j
+// (M1) and a = 1 / (M0 - M1 . m), M0 = sum omega V_j. bandForce needs only the scalar a and the vector m.
+// Exact (both sums hold) when the summed bonds are the ones K was built from. a <= 0: the neighbours lie on one
+// line (plane) off x_i and cannot reconstruct; returned as 0 (the caller then keeps the point's own value).
+double linearReconstruction(const FamilyView& fam, int i, const Mat3& Kinv, const double* broken, double m[3]) {
+  double M0 = 0.0, M1[3] = {0.0, 0.0, 0.0};
+  for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
+    if (broken && broken[b] != 0.0) continue;
+    const int j = fam.neighbors[b];
+    const double w = fam.unitInfluence ? 1.0 : fam.influence[b];
+    const double wv = w * fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
+    M0 += wv;
+    for (int a = 0; a < 3; ++a) M1[a] += wv * (fam.x[3 * j + a] - fam.x[3 * i + a]);
+  }
+  for (int r = 0; r < 3; ++r) m[r] = Kinv[3 * r] * M1[0] + Kinv[3 * r + 1] * M1[1] + Kinv[3 * r + 2] * M1[2];
+  const double schur = M0 - (M1[0] * m[0] + M1[1] * m[1] + M1[2] * m[2]);
+  return schur > 1e-12 * M0 ? 1.0 / schur : 0.0;
+}
+
 // addBandForce, with the hourglass part kept apart only when wanted (a compile-time choice: no cost otherwise).
+// The difference form sum omega (P_j - P_i) K_i^-1 xi V_j holds the point's own stress in -P_i m (m as above):
+// linearised, -dP_i m = C:(du_i (x) m) m, a negative stiffness C|m|^2 of the point against its own
+// displacement (the energy form has +P_i m there: a positive one). On the outer layer the traction term -P_i n / dx
+// outweighs it (n / dx against m); where a family is cut but the point has no exposed face (a staircase's
+// re-entrant corner: 8 of 28 bonds cut, n = 0) nothing does, and the plate with a lattice hole had a growing mode
+// there at Hourglass Coefficient 0.25 (test_surface_band.cpp). So the difference takes P-hat_i = sum phi_j P_j,
+// i's stress reconstructed from its neighbours: equal to P_i for every linear P (Eqs. 31-32's exactness and the
+// uniform-stress traction kept), with no dependence on u_i through P_i. The traction term keeps P_i.
 template <bool kHourglass>
 void bandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, const double* rows, int stride,
                double* force, const double* broken, double* hourglass) {
@@ -205,7 +233,13 @@ void bandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, 
   const double* yi = y + 3 * i;
   const double* ri = rows + static_cast<std::size_t>(stride) * i;
   const double* Pi = ri + kRowP;
+  double m[3];
+  const double a0 = linearReconstruction(fam, i, Kinv, broken, m);
+  // Per bond, P_j times omega V_j (K^-1 xi - phi m): its share of the difference and of -P-hat_i m. With a0 = 0
+  // (no reconstruction) the point's own P_i stands for P-hat_i, as in the paper's form.
   double f[3] = {0.0, 0.0, 0.0}, hg[3] = {0.0, 0.0, 0.0};
+  if (a0 == 0.0)
+    for (int a = 0; a < 3; ++a) f[a] -= Pi[3 * a] * m[0] + Pi[3 * a + 1] * m[1] + Pi[3 * a + 2] * m[2];
   for (int b = fam.offsets[i]; b < fam.offsets[i + 1]; ++b) {
     if (broken && broken[b] != 0.0) continue;
     const int j = fam.neighbors[b];
@@ -215,13 +249,14 @@ void bandForce(const FamilyView& fam, int i, const double* y, const Mat3& Kinv, 
     const double vj = fam.volume[j] * (fam.fraction ? fam.fraction[b] : 1.0);
     const double xi[3] = {fam.x[3 * j] - xi0[0], fam.x[3 * j + 1] - xi0[1], fam.x[3 * j + 2] - xi0[2]};
     const double Y[3] = {y[3 * j] - yi[0], y[3 * j + 1] - yi[1], y[3 * j + 2] - yi[2]};
-    double kx[3];  // K_i^-1 xi
-    for (int r = 0; r < 3; ++r) kx[r] = Kinv[3 * r] * xi[0] + Kinv[3 * r + 1] * xi[1] + Kinv[3 * r + 2] * xi[2];
+    const double phi = a0 * (1.0 - (m[0] * xi[0] + m[1] * xi[1] + m[2] * xi[2]));  // over omega V_j
+    double kx[3];  // K_i^-1 xi - phi m
+    for (int r = 0; r < 3; ++r)
+      kx[r] = Kinv[3 * r] * xi[0] + Kinv[3 * r + 1] * xi[1] + Kinv[3 * r + 2] * xi[2] - phi * m[r];
     double magi, magj;
     hourglassBothEnds(Y, xi, ri + kRowF, rj + kRowF, ri[kRowC], rj[kRowC], fam.refLength[b], magi, magj);
     for (int a = 0; a < 3; ++a) {
-      double t = 0.0;
-      for (int c = 0; c < 3; ++c) t += (Pj[3 * a + c] - Pi[3 * a + c]) * kx[c];
+      const double t = Pj[3 * a] * kx[0] + Pj[3 * a + 1] * kx[1] + Pj[3 * a + 2] * kx[2];
       f[a] += (w * t + (magi + magj) * Y[a]) * vj;
       if constexpr (kHourglass) hg[a] += (magi + magj) * Y[a] * vj;
     }
