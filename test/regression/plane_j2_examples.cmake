@@ -43,7 +43,8 @@ set(plane_j2_study
   "grooved_plate influence_gaussian 0.1850 0.866"
   "perforated_plate delta1.5_dx0.5 0.0857 0.356"
   "perforated_plate delta1.0_dx0.2 0.0516 0.247"
-  "perforated_plate delta0.5_dx0.125 0.0310 0.115")
+  "perforated_plate delta0.5_dx0.125 0.0310 0.115"
+  "perforated_plate delta0.25_dx0.0625 0.0198 0.041")
 foreach(row ${plane_j2_study})
   separate_arguments(f UNIX_COMMAND "${row}")
   list(GET f 0 case)
