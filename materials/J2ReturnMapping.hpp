@@ -31,6 +31,9 @@ struct OsbTrialMoments {
   // sum t^d_tr e^dp_n V: the trial state against the committed plastic extension, whose sign is the sign of
   // sigma_vm under OsbJ2Constants::plasticExtensionSign (0 for a node that has not flowed)
   double Se = 0.0;
+  // The split along omega x (OsbJ2Constants::omegaSplit, OsbJ2OmegaSplit.hpp; unset otherwise): sum omega x t^d V,
+  // m = sum omega x^2 V, sum omega^2 x^2 V
+  double Swx = 0.0, Xw = 0.0, Xw2 = 0.0;
 };
 
 // History of a node: committed (n) on input, updated (n+1) on output.
@@ -56,6 +59,9 @@ struct OsbJ2Constants {
   // (sigma_zz -> the mean stress), where the paper's sign is arbitrary (docs/materials.md, "Sign of sigma_vm").
   // OsbJ2NodeState::sign stays the third-moment sign (the output's Signed_Von_Mises_Stress).
   bool plasticExtensionSign = false;
+  // Plane stress with a non-unit influence function: split t^d along omega x, not x (OsbJ2OmegaSplit.hpp), so that
+  // the stored plastic extension gives the returned state (docs/materials.md, limitation iii). Needs Swx, Xw, Xw2.
+  bool omegaSplit = false;
 };
 
 enum class OsbJ2Status { Ok, BackStressBeyondYield, NotConverged };

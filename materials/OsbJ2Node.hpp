@@ -11,6 +11,7 @@
 #include "core/Material.hpp"
 #include "J2ReturnMapping.hpp"
 #include "OsbBondLoops.hpp"
+#include "OsbJ2OmegaSplit.hpp"
 #include "OsbJ2Trial.hpp"
 #include "PeridigmHardening.hpp"
 
@@ -25,6 +26,11 @@ namespace {
 // the 2 psi of pp x (Eq. 31).
 struct TrialSplit {
   double pp, Pperp, Ppar, vm;
+  // psi of the returned state G1 t_perp + G2 pp x and its dlambda derivative (dG1 = -bm G1^2, dG2 = -g2 bm G2^2)
+  PF_INLINE double psi(double G1, double G2) const { return 0.5 * (G1 * G1 * Pperp + G2 * G2 * Ppar); }
+  PF_INLINE double dpsi(double G1, double G2, double bm, double g2) const {
+    return -bm * (G1 * G1 * G1 * Pperp + g2 * G2 * G2 * G2 * Ppar);
+  }
 };
 
 PF_INLINE TrialSplit splitTrial(const OsbTrialMoments& t, const OsbYieldConstants& yc) {
@@ -56,9 +62,11 @@ struct NewtonResult {
 
 // Plastic trial state (f(t^d_tr) > 0, Eq. 43): Newton on Eq. 50 written as sqrt(psi/Cy) = sigma_bar (same
 // root, better scaled), with alpha and q following Eqs. 55-57 so sigma_bar = sigma_bar_n + (K + H) |d eps_p|.
-PF_INLINE NewtonResult returnToYieldSurface(const TrialSplit& tr, double sbarN, const OsbJ2Constants& k) {
+// Split: TrialSplit (along x) or OmegaSplit (along omega x, OsbJ2OmegaSplit.hpp), psi(G1, G2) of the returned state.
+template <class Split>
+PF_INLINE NewtonResult returnToYieldSurface(const Split& tr, double sbarN, const OsbJ2Constants& k) {
   const OsbYieldConstants& yc = k.yield;
-  const double bm = k.bm, g2 = k.g2, Pperp = tr.Pperp, Ppar = tr.Ppar, vmTr = tr.vm;
+  const double bm = k.bm, g2 = k.g2, vmTr = tr.vm;
   const double KH = k.isoHardening + k.kinHardening;
   // Initial guess: exact when G1 = G2 (3D, plane strain), where the return is radial with slope
   // bm/(2 Cy) (= 3 mu for the discrete normalisation).
@@ -68,8 +76,8 @@ PF_INLINE NewtonResult returnToYieldSurface(const TrialSplit& tr, double sbarN, 
   for (;;) {
     G1 = 1.0 / (1.0 + bm * dlam);
     G2 = 1.0 / (1.0 + g2 * bm * dlam);
-    const double psi = 0.5 * (G1 * G1 * Pperp + G2 * G2 * Ppar);
-    const double dpsi = -bm * (G1 * G1 * G1 * Pperp + g2 * G2 * G2 * G2 * Ppar);
+    const double psi = tr.psi(G1, G2);
+    const double dpsi = tr.dpsi(G1, G2, bm, g2);
     const double root = std::sqrt(yc.Ce * psi);
     vm = std::sqrt(psi / yc.Cy);
     deps = dlam * root;
@@ -103,13 +111,10 @@ PF_INLINE OsbJ2Return peridigmReturn(const OsbTrialMoments& t, const OsbJ2NodeSt
   return r;
 }
 
-// The body of osbJ2ReturnMapping, inlined into each clone of the kernel. As a call per node it made the J2
-// kernel execute 1.1 % more instructions (callgrind, AVX2 clone, 16^3 hardening cube; inlined: +0.15 %)
-// and run ~5 % slower on bench/kernel_hardening_40.xml (noisy host).
-PF_INLINE OsbJ2Return returnMapping(const OsbTrialMoments& trial, const OsbJ2NodeState& committed,
-                                    const OsbJ2Constants& k) {
-  if (k.peridigmLaw) return peridigmReturn(trial, committed, k);
-  const TrialSplit tr = splitTrial(trial, k.yield);
+// The return for the trial state's split (TrialSplit or OmegaSplit).
+template <class Split>
+PF_INLINE OsbJ2Return returnAlong(const Split& tr, const OsbTrialMoments& trial, const OsbJ2NodeState& committed,
+                                  const OsbJ2Constants& k) {
   const double thirdMomentSign = vonMisesSign(trial, committed.sign);
   const double sgn = k.plasticExtensionSign ? plasticExtensionSign(trial) : thirdMomentSign;
   // Direction of plastic flow along the loading axis, sign(sigma_vm - q) of Eqs. 45-46, 56.
@@ -149,6 +154,16 @@ PF_INLINE OsbJ2Return returnMapping(const OsbTrialMoments& trial, const OsbJ2Nod
   r.vonMises = nr.vm;
   r.status = OsbJ2Status::Ok;
   return r;
+}
+
+// The body of osbJ2ReturnMapping, inlined into each clone of the kernel. As a call per node it made the J2
+// kernel execute 1.1 % more instructions (callgrind, AVX2 clone, 16^3 hardening cube; inlined: +0.15 %)
+// and run ~5 % slower on bench/kernel_hardening_40.xml (noisy host).
+PF_INLINE OsbJ2Return returnMapping(const OsbTrialMoments& trial, const OsbJ2NodeState& committed,
+                                    const OsbJ2Constants& k) {
+  if (k.peridigmLaw) return peridigmReturn(trial, committed, k);
+  if (k.omegaSplit) return returnAlong(splitAlongOmegaX(trial, k.yield), trial, committed, k);
+  return returnAlong(splitTrial(trial, k.yield), trial, committed, k);
 }
 
 }  // namespace
@@ -254,19 +269,24 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
   double theta = thetaTr;
   if (r.dlambda > 0.0) {
     const double a1 = r.dlambda * r.G1, a2 = r.dlambda * flow.phi * r.G2 * r.pp;
-    const bool overOmega = !Unit && flow.flowOverOmega;
+    const bool overOmega = !Unit && flow.flowOverOmega, omegaSplit = !Unit && k.omegaSplit;
     // Eqs. 52, 58: e^dp_n + a1 (t^d - pp x) + a2 x, the returned t_perp and pp x scaled by dlambda and phi; or, for a
     // non-unit influence in 3D and plane strain (J2Flow::flowOverOmega), e^dp_n + a1 u with u = t^d_tr / omega
-    // (trialExtensionFlow), so that omega bm (e - c theta x - e^dp_n+1) = G1 t^d_tr, the returned state.
-    const double pp = r.pp, bm = k.bm, cth = c.c * thetaTr;
+    // (trialExtensionFlow), so that omega bm (e - c theta x - e^dp_n+1) = G1 t^d_tr, the returned state; in plane
+    // stress (OsbJ2Constants::omegaSplit, pp along omega x) e^dp_n + a1 u + (a2 - a1 pp) x (OsbJ2OmegaSplit.hpp).
+    const double pp = r.pp, bm = k.bm, cth = c.c * thetaTr, ax = a2 - a1 * pp;
     const double sum =
-        overOmega ? updatePlasticExtension<Unit>(w, xr, len, vj, n, inBlock, ep, [&](int b, auto ch) {
-                      return ch.load(epN + b) + a1 * trialExtensionFlow(ch, xr, len, epN, bm, cth, b);
-                    })
-                  : updatePlasticExtension<Unit>(w, xr, len, vj, n, inBlock, ep, [&](int b, auto ch) {
-                      const osb::Lanes x = ch.load(xr + b);
-                      return ch.load(epN + b) + a1 * (ch.load(tdv + b) - pp * x) + a2 * x;
-                    });
+        omegaSplit ? updatePlasticExtension<Unit>(w, xr, len, vj, n, inBlock, ep, [&](int b, auto ch) {
+                       return ch.load(epN + b) + a1 * trialExtensionFlow(ch, xr, len, epN, bm, cth, b) +
+                              ax * ch.load(xr + b);
+                     })
+        : overOmega ? updatePlasticExtension<Unit>(w, xr, len, vj, n, inBlock, ep, [&](int b, auto ch) {
+                        return ch.load(epN + b) + a1 * trialExtensionFlow(ch, xr, len, epN, bm, cth, b);
+                      })
+                    : updatePlasticExtension<Unit>(w, xr, len, vj, n, inBlock, ep, [&](int b, auto ch) {
+                        const osb::Lanes x = ch.load(xr + b);
+                        return ch.load(epN + b) + a1 * (ch.load(tdv + b) - pp * x) + a2 * x;
+                      });
     // Plane strain: theta from the total extension, i.e. the trial one (see J2Flow::beta).
     if (flow.beta) theta = c.k * c.D * sum / m;
     // q is measured along e^dp: when the flow carried e^dp through zero, its direction, and so q's sign, turned. With

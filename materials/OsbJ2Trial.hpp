@@ -5,6 +5,7 @@
 // bits and so take the same elastic/plastic branch. Internal to materials/.
 #include "J2ReturnMapping.hpp"
 #include "OsbBondLoops.hpp"
+#include "OsbJ2OmegaSplit.hpp"
 #include "OsbPlasticKernels.hpp"
 
 namespace pf {
@@ -23,6 +24,10 @@ struct J2Flow {
   // trial deviatoric extension, trialExtensionFlow) instead of t^d_tr (Eq. 52): then the stored state is the returned
   // one, G t^d_tr, on the yield surface. The same as Eq. 52 where omega = 1; the kernels read it only for omega != 1.
   bool flowOverOmega;
+  // Plane stress with a non-unit influence function: the return splits t^d_tr along omega x and the plastic extension
+  // flows along t_perp / omega + phi pp x (OsbJ2OmegaSplit.hpp), which closes with the omega-weighted theta feedback.
+  // The kernels read it only for omega != 1 (OsbJ2Constants::omegaSplit is set per node).
+  bool omegaSplit;
   OsbJ2Constants ret;
 };
 
@@ -92,6 +97,8 @@ PF_INLINE J2NodeTrial j2NodeTrial(const FamilyView& fam, const J2Parameters& p, 
   t.thetaTr = c.k * c.D * trialSum / m;
   t.moments = trialDeviatoricState<Unit>(w, xr, scr.len, epN, scr.vj, t.k.bm, c.c * t.thetaTr, n, inBlock, tdv);
   t.moments.Xx = Xx;
+  t.k.omegaSplit = !Unit && flow.omegaSplit;
+  if (t.k.omegaSplit) omegaSplitMoments<Unit>(w, xr, scr.vj, tdv, n, inBlock, m, t.moments);
   return t;
 }
 

@@ -17,8 +17,9 @@ J2Flow j2Flow(const J2Parameters& p) {
   f.beta = p.dim != Dimension::PlaneStrain;
   f.phi = p.dim == Dimension::PlaneStress ? 2.0 : 1.0;
   // G1 = G2 and phi = 1 there, so Eq. 52's flow is dlambda G1 t^d_tr and its omega-free twin closes exactly; plane
-  // stress's theta feedback (beta, phi = 2) does not (docs/materials.md, limitation iii).
+  // stress's theta feedback (beta, phi = 2) closes only with the split along omega x (docs/materials.md, limitation iii).
   f.flowOverOmega = p.dim != Dimension::PlaneStress;
+  f.omegaSplit = p.dim == Dimension::PlaneStress;
   f.ret = OsbJ2Constants{};
   // Decay rate of the x-component relative to the rest during the return (G2 vs G1 of Eq. 47):
   // the flow changes theta when beta is set, which feeds back through -c theta x.

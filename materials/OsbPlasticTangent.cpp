@@ -49,12 +49,18 @@ double peridigmDeltaLambda(const OsbTrialMoments& t, double dS2, const OsbJ2Retu
   return -0.5 * G * G * dS2 / gdl;
 }
 
-ReturnDerivative returnDerivative(const OsbTrialMoments& t, double dS2, double dSx, const OsbJ2Return& r,
+// dSwx: d(sum omega x t^d_tr V), read only for the split along omega x (OsbJ2Constants::omegaSplit).
+ReturnDerivative returnDerivative(const OsbTrialMoments& t, double dS2, double dSx, double dSwx, const OsbJ2Return& r,
                                   const OsbJ2Constants& k) {
   ReturnDerivative d{r.dlambda, r.G1, r.G2, r.pp, 0.0, 0.0, 0.0, 0.0};
   if (!(r.dlambda > 0.0)) return d;  // elastic: t^d = t^d_tr, no plastic extension
-  d.dpp = dSx / t.Xx;                // pp = t^d_tr . x / x . x
-  d.ddlam = k.peridigmLaw ? peridigmDeltaLambda(t, dS2, r, k) : paperDeltaLambda(t, dS2, d.dpp, r, k);
+  if (k.omegaSplit) {                // pp = t^d_tr . x / m (OsbJ2OmegaSplit.hpp)
+    d.dpp = dSx / t.Xw;
+    d.ddlam = omegaSplitDeltaLambda(t, dS2, dSx, dSwx, r, k);
+  } else {
+    d.dpp = dSx / t.Xx;  // pp = t^d_tr . x / x . x
+    d.ddlam = k.peridigmLaw ? peridigmDeltaLambda(t, dS2, r, k) : paperDeltaLambda(t, dS2, d.dpp, r, k);
+  }
   d.dG1 = -d.G1 * d.G1 * k.bm * d.ddlam;  // G1 = 1 / (1 + bm dl)
   d.dG2 = k.peridigmLaw ? d.dG1 : -d.G2 * d.G2 * k.g2 * k.bm * d.ddlam;
   return d;
@@ -76,16 +82,18 @@ PF_INLINE bool j2NodeLinearise(const FamilyView& fam, const J2Parameters& p, con
   nt.theta = tr.thetaTr;
   const OsbJ2Return& r = nt.r;
   if (!(r.dlambda > 0.0) || !flow.beta) return true;
-  // e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58)
+  // e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58), or a1 u (+ (a2 - a1 pp) x for the omega split)
   const double *xr = fam.refLength + b0, *w = fam.influence + b0, *epN = s.edpN + b0;
   const double *len = scr.len, *vj = scr.vj, *td = scr.a;
   const double a1 = r.dlambda * r.G1, a2 = r.dlambda * flow.phi * r.G2 * r.pp;
-  const bool overOmega = !fam.unitInfluence && flow.flowOverOmega;
-  const double bm = tr.k.bm, cth = c.c * tr.thetaTr;
+  const bool overOmega = !fam.unitInfluence && flow.flowOverOmega, omegaSplit = tr.k.omegaSplit;
+  const double bm = tr.k.bm, cth = c.c * tr.thetaTr, ax = a2 - a1 * r.pp;
   double sum = 0.0;
+  auto u = [&](int k) { return bm * (((len[k] - xr[k]) - cth * xr[k]) - epN[k]); };  // t^d_tr / omega
   for (int k = 0; k < n; ++k) {
-    const double ep = overOmega ? epN[k] + a1 * (bm * (((len[k] - xr[k]) - cth * xr[k]) - epN[k]))
-                                : epN[k] + a1 * (td[k] - r.pp * xr[k]) + a2 * xr[k];
+    const double ep = omegaSplit  ? epN[k] + a1 * u(k) + ax * xr[k]
+                      : overOmega ? epN[k] + a1 * u(k)
+                                  : epN[k] + a1 * (td[k] - r.pp * xr[k]) + a2 * xr[k];
     sum += w[k] * xr[k] * ((len[k] - xr[k]) - ep) * vj[k];
   }
   nt.theta = c.k * c.D * sum / fam.weightedVolume[i];  // as the force kernel forms it (OsbJ2Node.hpp)
@@ -103,10 +111,11 @@ struct ProductStreams {
 
 // The direction's part of a node's derivative: d theta_tr and the plastic extension's coefficients,
 // e^dp = e^dp_n + a1 (t^d_tr - pp x) + a2 x (Eqs. 52, 58) with its derivative da1, da2, dpp (d.*), and d theta.
-// overOmega: e^dp = e^dp_n + a1 u, u = t^d_tr / omega (J2Flow::flowOverOmega), cth = c theta_tr.
+// overOmega: e^dp = e^dp_n + a1 u, u = t^d_tr / omega (J2Flow::flowOverOmega), cth = c theta_tr; omegaSplit:
+// e^dp = e^dp_n + a1 u + ax x, ax = a2 - a1 pp (OsbJ2OmegaSplit.hpp), with its derivative dax.
 struct NodeDirection {
-  double dthetaTr = 0.0, dtheta = 0.0, a1 = 0.0, a2 = 0.0, da1 = 0.0, da2 = 0.0, cth = 0.0;
-  bool overOmega = false;
+  double dthetaTr = 0.0, dtheta = 0.0, a1 = 0.0, a2 = 0.0, da1 = 0.0, da2 = 0.0, cth = 0.0, ax = 0.0, dax = 0.0;
+  bool overOmega = false, omegaSplit = false;
   ReturnDerivative d{0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 };
 
@@ -114,6 +123,8 @@ struct NodeDirection {
 template <bool Unit, class Chunk>
 PF_INLINE osb::Lanes plasticIncrement(const ProductStreams& b, const NodeDirection& nd, double bm, int k,
                                       const Chunk& ch) {
+  if (!Unit && nd.omegaSplit)
+    return nd.a1 * trialExtensionFlow(ch, b.xr, b.len, b.epN, bm, nd.cth, k) + nd.ax * ch.load(b.xr + k);
   if (!Unit && nd.overOmega) return nd.a1 * trialExtensionFlow(ch, b.xr, b.len, b.epN, bm, nd.cth, k);
   const osb::Lanes x = ch.load(b.xr + k);
   return nd.a1 * (ch.load(b.td + k) - nd.d.pp * x) + nd.a2 * x;
@@ -124,9 +135,10 @@ template <bool Unit, class Chunk>
 PF_INLINE osb::Lanes plasticDerivative(const ProductStreams& b, const NodeDirection& nd, double bm, double cc, int k,
                                        const Chunk& ch, const osb::Lanes& dek) {
   const osb::Lanes x = ch.load(b.xr + k);
-  if (!Unit && nd.overOmega) {  // d(a1 u), du = bm (de - c d theta_tr x)
-    return nd.da1 * trialExtensionFlow(ch, b.xr, b.len, b.epN, bm, nd.cth, k) +
-           nd.a1 * (bm * (dek - cc * nd.dthetaTr * x));
+  if (!Unit && (nd.overOmega || nd.omegaSplit)) {  // d(a1 u (+ ax x)), du = bm (de - c d theta_tr x)
+    const osb::Lanes dau = nd.da1 * trialExtensionFlow(ch, b.xr, b.len, b.epN, bm, nd.cth, k) +
+                           nd.a1 * (bm * (dek - cc * nd.dthetaTr * x));
+    return nd.omegaSplit ? dau + nd.dax * x : dau;
   }
   const osb::Lanes dtd = osb::weighted<Unit>(ch, b.w, k, dek - cc * nd.dthetaTr * x) * bm;
   return nd.da1 * (ch.load(b.td + k) - nd.d.pp * x) + nd.a1 * (dtd - nd.d.dpp * x) + nd.da2 * x;
@@ -143,7 +155,8 @@ PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameter
   const int n = fam.offsets[i + 1] - fam.offsets[i];
   const bool inBlock = osb::chunksStayInBlock(fam, i), plastic = r.dlambda > 0.0;
   const double invm = 1.0 / fam.weightedVolume[i], kD = p.osb.k * p.osb.D, bm = tr.k.bm, cc = p.osb.c;
-  Lanes S = {}, TdDe = {}, TdX = {}, WXX = {};
+  const bool omegaSplit = !Unit && tr.k.omegaSplit;
+  Lanes S = {}, TdDe = {}, TdX = {}, WXX = {}, W2De = {};
   osb::forEachChunk(n, inBlock, [&](int k, auto ch) {
     const Lanes x = ch.load(b.xr + k), v = ch.load(b.vj + k);
     const Lanes dek = (ch.load(b.d0 + k) * ch.load(b.e0 + k) + ch.load(b.d1 + k) * ch.load(b.e1 + k) +
@@ -156,10 +169,12 @@ PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameter
       TdDe += t * wv * dek;
       TdX += t * wv * x;
       WXX += wv * x * x;
+      if (omegaSplit) W2De += osb::weighted<Unit>(ch, b.w, k, wv) * x * dek;
     }
   });
   NodeDirection nd;
   nd.overOmega = flow.flowOverOmega;
+  nd.omegaSplit = omegaSplit;
   nd.cth = cc * tr.thetaTr;
   const double dsum = osb::laneSum(S);
   nd.dthetaTr = nd.dtheta = kD * dsum * invm;
@@ -167,11 +182,18 @@ PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameter
   if (!plastic) return nd;
   const double dS2 = 2.0 * bm * (osb::laneSum(TdDe) - cc * nd.dthetaTr * osb::laneSum(TdX));
   const double dSx = bm * (dsum - cc * nd.dthetaTr * osb::laneSum(WXX));
-  const ReturnDerivative& d = nd.d = returnDerivative(tr.moments, dS2, dSx, r, tr.k);  // Eqs. 47, 50
+  // d(sum omega x t^d_tr V) = bm (sum omega^2 x de V - c d theta_tr sum omega^2 x^2 V): the omega split's moment
+  const double dSwx = omegaSplit ? bm * (osb::laneSum(W2De) - cc * nd.dthetaTr * tr.moments.Xw2) : 0.0;
+  const ReturnDerivative& d = nd.d = returnDerivative(tr.moments, dS2, dSx, dSwx, r, tr.k);  // Eqs. 47, 50
   nd.a1 = d.dlam * d.G1;
   nd.a2 = d.dlam * flow.phi * d.G2 * d.pp;
   nd.da1 = d.ddlam * d.G1 + d.dlam * d.dG1;
   nd.da2 = flow.phi * (d.ddlam * d.G2 * d.pp + d.dlam * d.dG2 * d.pp + d.dlam * d.G2 * d.dpp);
+  if (omegaSplit) {  // ax = dlambda pp (phi G2 - G1)
+    const double h = flow.phi * d.G2 - d.G1, dh = flow.phi * d.dG2 - d.dG1;
+    nd.ax = nd.a2 - nd.a1 * d.pp;
+    nd.dax = d.ddlam * d.pp * h + d.dlam * d.dpp * h + d.dlam * d.pp * dh;
+  }
   if (flow.beta) {
     Lanes P = {};
     osb::forEachChunk(n, inBlock, [&](int k, auto ch) {

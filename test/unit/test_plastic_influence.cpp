@@ -144,14 +144,14 @@ TEST(PlasticInfluence, YieldOnsetIsTheReferences) {
 }
 
 // Plastic loading with omega != 1 (cyclic uniaxial strain to 1.2 %, iso / kin hardening): the state is
-// plastic (alpha > 5e-3), and the reported von Mises (the return's, G t^d_trial, Eq. 47) equals the reference
-// evaluated on the stored plastic extension to 1e-10 of sigma_y in 3D and plane strain for every omega (measured
-// 2.4e-15 ... 3.4e-15), and for omega = 1 in plane stress. Since 2026-12-06 the plastic extension flows along
-// t^d_tr / omega there (J2Flow::flowOverOmega); with Eq. 52's flow along t^d_tr the stored state was
-// t^d_tr - (B/m) omega dlambda G t^d_tr, G t^d_tr only where omega = 1: gap 0.104 ... 0.232 sigma_y (Parabolic
-// Decay, Gaussian; H = 0 and 20 GPa). Plane stress keeps Eq. 52 (its theta feedback does not close with omega):
-// measured Parabolic Decay 0.185 / 0.231, Gaussian 0.290 / 0.311 (H = 0 / 20 GPa), asserted below 0.32 so that a
-// change shows here (docs/materials.md, limitation iii). Peridigm's elastic_plastic has Eq. 52's form.
+// plastic (alpha > 5e-3), and the reported von Mises (the return's, on the yield surface sigma_bar_n+1) equals the
+// reference evaluated on the stored plastic extension to 1e-10 of sigma_y in every dimension for every omega
+// (measured 2.4e-15 ... 4.4e-15: round-off of the bond sums). Since 2026-12-06 the plastic extension flows along
+// t^d_tr / omega in 3D and plane strain (J2Flow::flowOverOmega), and in plane stress along t_perp / omega + phi pp x
+// with t^d split along omega x (J2Flow::omegaSplit, OsbJ2OmegaSplit.hpp). With Eq. 52's flow along t^d the stored
+// state was t^d_tr - (B/m) omega dlambda G t^d_tr, G t^d_tr only where omega = 1: gap 0.104 ... 0.232 sigma_y in 3D
+// and plane strain, and in plane stress (x split, Eq. 52 with phi = 2) Parabolic Decay 0.185 / 0.231, Gaussian
+// 0.290 / 0.311 (H = 0 / 20 GPa). Peridigm's elastic_plastic has Eq. 52's form.
 TEST(PlasticInfluence, PlasticStateAgainstReference) {
   const double ratio = 6.3;
   for (Dimension dim : kDims)
@@ -173,7 +173,7 @@ TEST(PlasticInfluence, PlasticStateAgainstReference) {
                     kindName(kind), H, gap, alphaMax);
         SCOPED_TRACE(std::string(dimName(dim)) + " " + kindName(kind) + " H = " + std::to_string(H));
         EXPECT_GT(alphaMax, 5e-3);
-        EXPECT_LT(gap, kind == Influence::One || dim != Dimension::PlaneStress ? 1e-10 : 0.32);
+        EXPECT_LT(gap, 1e-10);
       }
 }
 
@@ -209,5 +209,35 @@ TEST(PlasticInfluence, ContinuumNormalisationClosedForm) {
       EXPECT_NEAR(ratioVm, std::sqrt(my / r.m), 1e-10);
       EXPECT_NEAR(sa / sb, std::sqrt(r.m / my), 1e-4);
     }
+  }
+}
+
+// Information (docs/materials.md, limitation iii): plane stress with omega != 1 against classical plane-stress J2
+// (ClassicalJ2) on the J2Equivalence paths (uniaxial, cyclic uniaxial, shear strain to 1.2 %; iso and kin hardening)
+// at the ratio above. The return is consistent (PlasticStateAgainstReference), but the von Mises measure is written
+// for omega = 1, so the model yields at another strain than J2 (YieldOnsetIsTheReferences) and its von Mises error
+// follows. Asserted: each maximum over paths and hardening as measured, +-0.005 (the docs quote two decimals);
+// omega = 1 is the lattice error of this small ratio (J2Equivalence holds it at 15 / 30).
+TEST(PlasticInfluence, PlaneStressAgainstClassicalJ2) {
+  const double ratio = 6.3;
+  // measured max |vm - vm_J2| / sigma_y, |eps_y / eps_y,J2 - 1|, |alpha - alpha_J2| / max alpha_J2
+  const double vmMeasured[] = {0.0403, 0.2093, 0.3201}, onsetMeasured[] = {0.0372, 0.1726, 0.3463},
+               alphaMeasured[] = {0.0574, 0.2356, 0.4118};
+  for (int i = 0; i < 3; ++i) {
+    const Influence::Kind kind = kKinds[i];
+    double vm = 0, onset = 0, alpha = 0;
+    for (Path path : {Path::Uniaxial, Path::Cyclic, Path::Shear})
+      for (double H : {0.0, 20e9}) {
+        PathOptions o;
+        o.influence = Influence(kind);
+        const PathResult r = runPath(Dimension::PlaneStress, ratio, path, 20e9 - H, H, o);
+        std::printf("%-15s %-9s H=%-6g vm %.4f alpha %.4f onset %.4f stress %.4f Newton %d\n", kindName(kind),
+                    pathName(path), H, r.vmErr, r.alphaErr, r.onsetErr, r.stressErr, r.maxIterations);
+        vm = std::max(vm, r.vmErr); onset = std::max(onset, r.onsetErr); alpha = std::max(alpha, r.alphaErr);
+      }
+    SCOPED_TRACE(kindName(kind));
+    EXPECT_NEAR(vm, vmMeasured[i], 0.005);
+    EXPECT_NEAR(onset, onsetMeasured[i], 0.005);
+    EXPECT_NEAR(alpha, alphaMeasured[i], 0.005);
   }
 }
