@@ -38,6 +38,16 @@ std::vector<ParameterSpec> elasticSolidParameters(ShearCorrection scf) {
   return params;
 }
 
+ParameterSpec osbSurfaceCorrection() {
+  return ParameterSpec::text("Surface Correction",
+                             "`Position Aware`: each point's influence function is made position aware, omega (1 + "
+                             "xi.L xi/|xi|^2) with L solved per point so that its family's second moment is isotropic: "
+                             "the dilatation is exact for every affine strain at a free surface too (docs/materials.md, "
+                             "\"Surface correction\"); `None`: Peridigm's model")
+      .oneOf({"None", "Position Aware"})
+      .byDefault("None");
+}
+
 bool shearCorrectionOf(const MaterialInput& in, Dimension dim) {
   if (!in.has("Apply Shear Correction Factor")) return dim == Dimension::ThreeD;
   const bool on = in.flag("Apply Shear Correction Factor");
