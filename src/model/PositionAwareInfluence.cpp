@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace pf {
 
@@ -51,55 +52,94 @@ int moments(const double* z, bool planar, double* q, double* e) {
   return 6;
 }
 
+// Newton with backtracking on max|R| from L (in place) until max|R| <= tol; false if it stalls (no positive
+// weights make the moment isotropic: Newton then walks off towards infinite L) or a step cannot be solved.
+template <class Residual>
+bool newton(const Residual& residual, double* lambda, int n, double tol) {
+  double r[kMax], jac[kMax][kMax];
+  double norm = residual(lambda, r, jac);
+  for (int it = 0; it < 60; ++it) {
+    if (norm <= tol) return true;
+    double step[kMax];
+    for (int p = 0; p < n; ++p) step[p] = -r[p];
+    if (!solve(jac, step, n)) return false;
+    double t = 1.0, trial[kMax], rt[kMax], nt = 0.0;
+    for (int ls = 0; ls < 40; ++ls, t *= 0.5) {
+      for (int p = 0; p < n; ++p) trial[p] = lambda[p] + t * step[p];
+      nt = residual(trial, rt, nullptr);
+      if (nt < norm) break;
+    }
+    if (!(nt < norm)) return false;
+    for (int p = 0; p < n; ++p) lambda[p] = trial[p];
+    norm = residual(lambda, r, jac);
+  }
+  return norm <= tol;
+}
+
 }  // namespace
 
 PositionAwareSummary positionAwareInfluence(BondFamily& family, int begin, int end, const double* x,
                                             const double* volume, bool planar) {
   PositionAwareSummary out;
   const int diag = planar ? 2 : 3;
+  std::vector<double> q, e, w;  // per bond of the row: moments, modes, base weight omega V'
   for (int i = begin; i < end; ++i) {
-    const int b0 = family.offsets[i], b1 = family.offsets[i + 1];
-    double k[kMax][kMax] = {}, m2[kMax] = {}, q[kMax], e[kMax], z[3];
+    const int b0 = family.offsets[i], b1 = family.offsets[i + 1], nb = b1 - b0;
     int n = planar ? 3 : 6;
-    for (int b = b0; b < b1; ++b) {
-      const int j = family.neighbors[b];
+    q.assign(static_cast<std::size_t>(nb) * kMax, 0.0), e.assign(q.size(), 0.0), w.assign(nb, 0.0);
+    double trace = 0.0, z[3];
+    for (int k = 0; k < nb; ++k) {
+      const int b = b0 + k, j = family.neighbors[b];
       for (int d = 0; d < 3; ++d) z[d] = x[3 * j + d] - x[3 * i + d];
-      const double w = family.influence[b] * volume[j] * (family.fraction.empty() ? 1.0 : family.fraction[b]);
-      n = moments(z, planar, q, e);
-      for (int p = 0; p < n; ++p) {
-        m2[p] += w * q[p];
-        for (int c = 0; c < n; ++c) k[p][c] += w * q[p] * e[c];
-      }
+      w[k] = family.influence[b] * volume[j] * (family.fraction.empty() ? 1.0 : family.fraction[b]);
+      n = moments(z, planar, &q[kMax * k], &e[kMax * k]);
+      for (int p = 0; p < diag; ++p) trace += w[k] * q[kMax * k + p];
     }
-    // Target c I with c = tr(m2) / D, so the trace row asks sum w xi.L xi = 0: m is kept.
-    double trace = 0.0;
-    for (int p = 0; p < diag; ++p) trace += m2[p];
-    double lambda[kMax];
-    for (int p = 0; p < n; ++p) lambda[p] = (p < diag ? trace / diag : 0.0) - m2[p];
+    // omega~ = omega exp(xi.L xi / |xi|^2) > 0: Newton on the moment residual R(L) = sum w g xi (x) xi - (m/D) I,
+    // g = exp(sum L_k e_k). R is the gradient of a convex function of L (its Jacobian sum w g q_p e_k is a Gram
+    // matrix up to column scaling), so Newton with backtracking on |R| converges whenever the family spans every
+    // direction. The first step from L = 0 is the quadratic (linearised) correction.
+    double lambda[kMax] = {};
+    auto residual = [&](const double* L, double* r, double jac[kMax][kMax]) {
+      double norm = 0.0;
+      for (int p = 0; p < n; ++p) {
+        r[p] = p < diag ? -trace / diag : 0.0;
+        if (jac)
+          for (int c = 0; c < n; ++c) jac[p][c] = 0.0;
+      }
+      for (int k = 0; k < nb; ++k) {
+        double s = 0.0;
+        for (int p = 0; p < n; ++p) s += L[p] * e[kMax * k + p];
+        const double g = w[k] * std::exp(s);
+        for (int p = 0; p < n; ++p) {
+          r[p] += g * q[kMax * k + p];
+          if (jac)
+            for (int c = 0; c < n; ++c) jac[p][c] += g * q[kMax * k + p] * e[kMax * k + c];
+        }
+      }
+      for (int p = 0; p < n; ++p) norm = std::max(norm, std::fabs(r[p]));
+      return norm;
+    };
     // Already isotropic to round-off (a symmetric family: the interior of a lattice): omega stays as it is, bit
     // for bit, rather than take a factor 1 +- 1e-16.
-    double offset = 0.0;
-    for (int p = 0; p < n; ++p) offset = std::max(offset, std::fabs(lambda[p]));
-    if (offset <= 1e-14 * trace) continue;
-    if (b1 == b0 || !solve(k, lambda, n)) {
+    double r[kMax];
+    if (nb == 0 || residual(lambda, r, nullptr) <= 1e-14 * trace) continue;
+    if (!newton(residual, lambda, n, 1e-13 * trace)) {
       ++out.singular;
       continue;
     }
     ++out.corrected;
-    for (int b = b0; b < b1; ++b) {
-      const int j = family.neighbors[b];
-      for (int d = 0; d < 3; ++d) z[d] = x[3 * j + d] - x[3 * i + d];
-      moments(z, planar, q, e);
+    for (int k = 0; k < nb; ++k) {
       double s = 0.0;
-      for (int p = 0; p < n; ++p) s += lambda[p] * e[p];
-      const double ratio = 1.0 + s;
+      for (int p = 0; p < n; ++p) s += lambda[p] * e[kMax * k + p];
+      const double ratio = std::exp(s);
       out.minRatio = std::min(out.minRatio, ratio);
       out.maxRatio = std::max(out.maxRatio, ratio);
-      family.influence[b] *= ratio;
+      family.influence[b0 + k] *= ratio;
     }
   }
   family.unitInfluence =
-      std::all_of(family.influence.begin(), family.influence.end(), [](double w) { return w == 1.0; });
+      std::all_of(family.influence.begin(), family.influence.end(), [](double v) { return v == 1.0; });
   return out;
 }
 
