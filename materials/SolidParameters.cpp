@@ -40,10 +40,11 @@ std::vector<ParameterSpec> elasticSolidParameters(ShearCorrection scf) {
 
 ParameterSpec osbSurfaceCorrection() {
   return ParameterSpec::text("Surface Correction",
-                             "`Position Aware`: each point's influence function is made position aware, omega (1 + "
-                             "xi.L xi/|xi|^2) with L solved per point so that its family's second moment is isotropic: "
-                             "the dilatation is exact for every affine strain at a free surface too (docs/materials.md, "
-                             "\"Surface correction\"); `None`: Peridigm's model")
+                             "`Position Aware`: each point's influence becomes omega exp(xi.L xi/|xi|^2), L solved per "
+                             "point so that its family's second moment is isotropic (m unchanged): the dilatation is "
+                             "exact for every small affine strain near a free surface too; points where no positive "
+                             "weights do it (convex lattice corners and edges) keep omega (docs/materials.md, \"Surface "
+                             "correction\"); `None`: Peridigm's model")
       .oneOf({"None", "Position Aware"})
       .byDefault("None");
 }

@@ -1,12 +1,13 @@
 #pragma once
 // Position-aware dilatation influence (material parameter `Surface Correction` = `Position Aware` of the OSB
 // solids; docs/materials.md, "Surface correction"). Rewrites omega of each bond of rows [begin, end) as
-//   omega~ = omega (1 + xi.L_i xi / |xi|^2),  L_i symmetric, per point,
+//   omega~ = omega exp(xi.L_i xi / |xi|^2) > 0,  L_i symmetric, per point,
 // so that the point's second moment sum omega~ xi (x) xi V' is isotropic (c I) with c = m_i / D: the OSB
 // dilatation (D/m) sum omega~ x e V' is then tr(eps) for any small affine strain at every point, a
-// truncated family included (Mitchell, Silling & Littlewood 2015's dilatation condition, Pals, applied to
-// the OSB omega). m_i = sum omega~ |xi|^2 V' is unchanged (the trace of the condition). Interior points of
-// a symmetric lattice have L = 0 (omega~ = omega, to round-off).
+// truncated family included (the dilatation condition of Mitchell, Silling & Littlewood 2015's Pals, met
+// with positive weights). m_i = sum omega~ |xi|^2 V' is unchanged (the trace of the condition). A row no
+// positive weights make isotropic (a convex corner or edge) and a symmetric one (the lattice interior) keep
+// omega bit for bit.
 #include "core/BondFamily.hpp"
 
 namespace pf {
