@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <numeric>
 #include <set>
 #include <unordered_map>
@@ -370,13 +369,9 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
                    s.ndoBand, s.tensileStrength, s.fieldOperators, s.stretchOfTime, s.initialBreaks});
     blockModels.back().bulkModulus = s.bulkModulus;
     const MaterialInput& mv = deck.material(s.materialName).values;
-    if (mv.has("Surface Correction") && mv.text("Surface Correction") == "Position Aware") {
-      const PositionAwareSummary pa = positionAwareInfluence(layout->family(), r.begin, r.end, x.data(), volume.data(),
-                                                             isPlanar(s.material->dimension()));
-      if (std::getenv("PF_PA_DEBUG"))
-        std::fprintf(stderr, "position aware: %d rows, %d singular, omega~/omega in [%g, %g]\n", pa.corrected,
-                     pa.singular, pa.minRatio, pa.maxRatio);
-    }
+    // The OSB solids' `Surface Correction` (materials/SolidParameters.hpp): their influence, before m is computed.
+    if (mv.has("Surface Correction") && mv.text("Surface Correction") == "Position Aware")
+      positionAwareInfluence(layout->family(), r.begin, r.end, x.data(), volume.data(), isPlanar(s.material->dimension()));
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;
