@@ -20,6 +20,7 @@ std::vector<std::string> ElasticMaterial::fieldsRead() const {
 
 MaterialEntry ElasticMaterial::entry() {
   std::vector<ParameterSpec> params = withThermalExpansion(elasticSolidParameters());
+  params.push_back(osbSurfaceCorrection());
   // Peridigm's Elastic reads no such parameter and so ignores it; its Interfaces suite deck gives one (0).
   params.push_back(ParameterSpec::real("Hourglass Coefficient", "accepted, ignored (Peridigm's Elastic has no hourglass "
                                                                 "force; the correspondence models do)"));

@@ -86,6 +86,7 @@ std::vector<ParameterSpec> ElasticPlasticMaterial::parameters(bool hardening) {
                                        "(lattice-consistent; docs/materials.md)")
                        .oneOf({"Discrete", "Continuum"})
                        .byDefault("Continuum"));
+  params.push_back(osbSurfaceCorrection());
   return params;
 }
 

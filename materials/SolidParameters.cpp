@@ -38,6 +38,17 @@ std::vector<ParameterSpec> elasticSolidParameters(ShearCorrection scf) {
   return params;
 }
 
+ParameterSpec osbSurfaceCorrection() {
+  return ParameterSpec::text("Surface Correction",
+                             "`Position Aware`: each point's influence becomes omega exp(xi.L xi/|xi|^2), L solved per "
+                             "point so that its family's second moment is isotropic (m unchanged): the dilatation is "
+                             "exact for every small affine strain near a free surface too; points where no positive "
+                             "weights do it (convex lattice corners and edges) keep omega (docs/materials.md, \"Surface "
+                             "correction\"); `None`: Peridigm's model")
+      .oneOf({"None", "Position Aware"})
+      .byDefault("None");
+}
+
 bool shearCorrectionOf(const MaterialInput& in, Dimension dim) {
   if (!in.has("Apply Shear Correction Factor")) return dim == Dimension::ThreeD;
   const bool on = in.flag("Apply Shear Correction Factor");

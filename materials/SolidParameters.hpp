@@ -21,6 +21,11 @@ enum class ShearCorrection {
 
 std::vector<ParameterSpec> elasticSolidParameters(ShearCorrection scf = ShearCorrection::IgnoredAsPeridigm);
 
+// "Surface Correction" of the OSB solids (Elastic, Elastic Plastic, Elastic Plastic Hardening): `None` (default,
+// Peridigm's model) or `Position Aware` (the model builder rewrites the block's influence function,
+// src/model/PositionAwareInfluence.hpp, which the builder calls; the material's kernels are unchanged).
+ParameterSpec osbSurfaceCorrection();
+
 // Peridigm3D: whether the factor is applied (given value, else 3D); InputError for true in 2D.
 bool shearCorrectionOf(const MaterialInput& in, Dimension dim);
 // IgnoredAsPeridigm: warns when the deck asks for it; always false.

@@ -1,4 +1,5 @@
 #include "ModelBuilder.hpp"
+
 #include "model/ContactBuilder.hpp"
 
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include "model/BlockRules.hpp"
 #include "model/LoadedField.hpp"
 #include "model/PointHorizons.hpp"
+#include "model/PositionAwareInfluence.hpp"
 #include "model/PressureLoad.hpp"
 #include "parallel/Collective.hpp"
 #include "parallel/Partition.hpp"
@@ -372,6 +374,10 @@ Problem buildProblem(const Deck& deck, const Communicator& comm) {
         BlockModel{r.blockId, s.name, s.materialName, blockHorizon, r.begin, r.end, s.material, s.criticalStretch,
                    s.ndoBand, s.tensileStrength, s.fieldOperators, s.stretchOfTime, s.initialBreaks});
     blockModels.back().bulkModulus = s.bulkModulus;
+    const MaterialInput& mv = deck.material(s.materialName).values;
+    // The OSB solids' `Surface Correction` (materials/SolidParameters.hpp): their influence, before m is computed.
+    if (mv.has("Surface Correction") && mv.text("Surface Correction") == "Position Aware")
+      positionAwareInfluence(layout->family(), r.begin, r.end, x.data(), volume.data(), isPlanar(s.material->dimension()));
   }
   const int numOwned = layout->numOwned();
   std::unordered_map<int, int> localOf;

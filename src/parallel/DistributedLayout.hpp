@@ -62,6 +62,8 @@ class DistributedLayout {
   std::vector<double> releaseVolumes() { return std::move(volume_); }
   const std::vector<BlockRange>& blocks() const { return blocks_; }
   const BondFamily& family() const { return family_; }
+  // For a rewrite of the influence before the Model is built (model/PositionAwareInfluence.hpp).
+  BondFamily& family() { return family_; }
   const Communicator& comm() const { return comm_; }
   int rank() const { return comm_.rank(); }
   int size() const { return comm_.size(); }

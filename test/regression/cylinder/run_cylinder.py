@@ -3,8 +3,11 @@
 and the OSB models against closed forms (geometry and references in cylinder_case.py).
 
   elastic   Elastic, p = 0.3 p_y, NOX: bore and outside radial displacement vs Lame. Bounds: bore 2 %
-            (measured 0.96 %), outside 4 % (measured 2.6 %: the free outer surface is softer in
-            peridynamics, the surface effect); a 5 % error in the applied force fails both.
+            (measured -0.96 %), outside 4 % (measured -2.6 %: the truncated families near the free outer
+            surface overestimate the dilatation under the hoop stress, the surface effect); a 5 % error in the
+            applied force fails both. With 'Surface Correction' = 'Position Aware' (docs/materials.md, "Surface
+            correction"): bore within 3 % (measured +1.99 %), outside error in [+1 %, +4 %] (measured +2.90 %;
+            the window excludes the uncorrected -2.6 %, so a correction that is not applied fails).
   yield     Elastic Plastic (Continuum normalisation), p from 0.85 to 1.1 p_y in 0.05 p_y steps: no plastic
             strain at the bore probe at 0.95 p_y, some at 1.05 p_y: first yield within 5 %.
   limit     Elastic Plastic on the polar ring (cylinder_case.PolarRing: its material spans exactly a ... b),
@@ -37,7 +40,7 @@ PLASTIC = f'''<Parameter name="Material Model" type="string" value="Elastic Plas
 
 def run(cmd, material, t0, t1, steps, p_ref):
     """Runs p(t) = p_ref t from t0 to t1; returns the history rows (one per load step, step 0 dropped)."""
-    probed = "Displacement" if material == ELASTIC else "Displacement Equivalent_Plastic_Strain"
+    probed = "Displacement" if "Elastic Plastic" not in material else "Displacement Equivalent_Plastic_Strain"
     rows = C.run_case(cmd, material, t0, t1, steps, f"{p_ref!r}*t",
                       lambda text: text.replace('value="Displacement"/>', f'value="{probed}"/>', 1))
     return [r for r in rows.values() if int(r["step"]) > 0]
@@ -51,11 +54,15 @@ def check(failures, ok, what):
 
 def elastic(cmd, failures):
     p = 0.3 * C.first_yield_pressure()
-    row = run(cmd, ELASTIC, 0.0, 1.0, 1, p)[-1]
-    for probe, r, bound in (("Bore", C.A, 0.02), ("Outside", C.B, 0.04)):
-        u, ref = float(row[f"Probe_{probe}_DisplacementX"]), C.lame_radial_displacement(p, r)
-        check(failures, abs(u / ref - 1) < bound, f"elastic u_r({probe}) = {u:.5g} m, Lame {ref:.5g} m, error "
-              f"{100 * (u / ref - 1):+.2f} % (bound {100 * bound:.0f} %)")
+    corrected = ELASTIC + '<Parameter name="Surface Correction" type="string" value="Position Aware"/>'
+    for material, label, bounds in ((ELASTIC, "", {"Bore": (-0.02, 0.02), "Outside": (-0.04, 0.04)}),
+                                    (corrected, " Position Aware", {"Bore": (-0.03, 0.03), "Outside": (0.01, 0.04)})):
+        row = run(cmd, material, 0.0, 1.0, 1, p)[-1]
+        for probe, r in (("Bore", C.A), ("Outside", C.B)):
+            u, ref = float(row[f"Probe_{probe}_DisplacementX"]), C.lame_radial_displacement(p, r)
+            lo, hi = bounds[probe]
+            check(failures, lo < u / ref - 1 < hi, f"elastic{label} u_r({probe}) = {u:.5g} m, Lame {ref:.5g} m, error "
+                  f"{100 * (u / ref - 1):+.2f} % (bounds {100 * lo:+.0f} % ... {100 * hi:+.0f} %)")
 
 
 def first_yield(cmd, failures):
