@@ -153,12 +153,21 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
     status = NOX::StatusTest::Failed;
   }
   out.converged = status == NOX::StatusTest::Converged && force->getStatus() == NOX::StatusTest::Converged;
+  keepConvergedForce(out.converged ? residual.lastForceAt(u) : nullptr, u);
   out.residual = force->last().residual;
   out.residualDensity = force->last().residualDensity;
   out.tolerance = force->tolerance();
   out.load = force->last().load;
   out.peridigmResidual = force->last().peridigmQuasiStatic;
   return out;
+}
+
+void NewtonKrylov::keepConvergedForce(const std::vector<double>* f, const std::vector<double>& u) {
+  converged_ = f != nullptr;
+  if (!f) return;
+  lastModelCall_ = work_.modelCalls();
+  convergedU_ = u;
+  convergedForce_ = *f;
 }
 
 NewtonOutcome NewtonKrylov::solveWithBreaks(Model& model, std::vector<double>& u, double t, const Inertia* inertia,
@@ -173,6 +182,7 @@ NewtonOutcome NewtonKrylov::solveWithBreaks(Model& model, std::vector<double>& u
   }, t);
   o.iterations = iterations;
   o.linearIterations = linear;
+  if (model.hasDamage()) converged_ = false;  // the rounds evaluated the model after the last solve
   return o;
 }
 

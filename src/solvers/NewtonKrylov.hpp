@@ -74,6 +74,12 @@ class NewtonKrylov {
   NewtonOutcome solveWithBreaks(Model& model, std::vector<double>& u, double t, const Inertia* inertia = nullptr,
                                 double loadFloor = 0.0);
   const NewtonKrylovOptions& options() const { return opt_; }
+  // After a converged solve: the internal force density at its u if the model's trial state is still that of the
+  // last residual there (a commit then needs no evaluation of its own); null otherwise, after the damage break
+  // rounds (they evaluate between the solves), or once the model has been called by anyone else.
+  const std::vector<double>* convergedForce(const std::vector<double>& u) const {
+    return converged_ && lastModelCall_ == work_.modelCalls() && u == convergedU_ ? &convergedForce_ : nullptr;
+  }
   // The engine's work so far (all its solves).
   const NewtonWork& work() const { return work_; }
 
@@ -81,6 +87,10 @@ class NewtonKrylov {
   NewtonKrylovOptions opt_;
   std::unique_ptr<KrylovSolver> krylov_;  // pair stiffness and its preconditioner: built on first use, kept
   NewtonWork work_;
+  void keepConvergedForce(const std::vector<double>* f, const std::vector<double>& u);  // null: none
+  bool converged_ = false;
+  long lastModelCall_ = -1;
+  std::vector<double> convergedU_, convergedForce_;
 };
 
 }  // namespace pf

@@ -75,7 +75,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
 SolverEntry NoxQuasiStaticSolver::entry() {
   SolverEntry e;
   e.name = "NOXQuasiStatic";
-  e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES by Belos, MueLu or Ifpack2 preconditioner)";
+  e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES, MueLu or Ifpack2 preconditioner)";
   e.loadSteps = true;
   e.parameters = commonSpecs(false);
   e.parameters.insert(e.parameters.begin(), S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1));
