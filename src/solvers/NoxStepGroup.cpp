@@ -114,8 +114,10 @@ NOX::Abstract::Group::ReturnType NoxStepGroup::applyJacobian(const NOX::Abstract
   if (!isJacobian_) return BadDependency;
   Teuchos::ArrayRCP<const double> in = local(input);
   Teuchos::ArrayRCP<double> out = local(result);
-  if (shared_.jdPoint == point_ && shared_.jd.size() == static_cast<std::size_t>(in.size()) &&
-      shared_.krylov->onEveryRank(std::equal(in.begin(), in.end(), shared_.jdDirection.begin()))) {
+  // jdPoint is the same on every rank, so every rank joins the collective comparison or none does.
+  if (shared_.jdPoint == point_ &&
+      shared_.krylov->onEveryRank(shared_.jdDirection.size() == static_cast<std::size_t>(in.size()) &&
+                                  std::equal(in.begin(), in.end(), shared_.jdDirection.begin()))) {
     std::copy(shared_.jd.begin(), shared_.jd.end(), out.begin());
     return Ok;
   }
