@@ -1,8 +1,5 @@
 #include "KrylovSolver.hpp"
 
-#include <BelosLinearProblem.hpp>
-#include <BelosPseudoBlockGmresSolMgr.hpp>
-#include <BelosTpetraAdapter.hpp>
 #include <Ifpack2_Factory.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_ParameterListExceptions.hpp>
@@ -13,14 +10,11 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
 
-// Belos' Tpetra library already holds GMRES for Tpetra's default vector and operator (its solver factory instantiates
-// it): taken from there instead of instantiated again here, which took half of this file's 41 s compile (the largest
-// of the build; docs/benchmark-log.md, session 25).
-extern template class Belos::PseudoBlockGmresSolMgr<double, Tpetra::MultiVector<double>, Tpetra::Operator<double>>;
 
 #include <algorithm>
 #include <sstream>
 
+#include "Gmres.hpp"
 #include "PairStiffness.hpp"
 #include "MueLuPreconditioner.hpp"
 #include "NewtonWork.hpp"
@@ -38,31 +32,6 @@ using GO = Map::global_ordinal_type;
 using MV = Tpetra::MultiVector<double>;
 using OP = Tpetra::Operator<double>;
 using Matrix = Tpetra::CrsMatrix<double>;
-
-struct ActionFailed {};
-
-// The tangent as a Tpetra operator: Y = alpha J X + beta Y, column by column through the array action.
-class ActionOperator : public OP {
- public:
-  ActionOperator(Teuchos::RCP<const Map> map, const TangentAction& action) : map_(std::move(map)), action_(action) {}
-  Teuchos::RCP<const Map> getDomainMap() const override { return map_; }
-  Teuchos::RCP<const Map> getRangeMap() const override { return map_; }
-  void apply(const MV& X, MV& Y, Teuchos::ETransp, double alpha, double beta) const override {
-    const std::size_t n = X.getLocalLength();
-    tmp_.resize(n);
-    for (std::size_t col = 0; col < X.getNumVectors(); ++col) {
-      Teuchos::ArrayRCP<const double> x = X.getData(col);
-      if (!action_(x.getRawPtr(), tmp_.data())) throw ActionFailed();
-      Teuchos::ArrayRCP<double> y = Y.getDataNonConst(col);
-      for (std::size_t k = 0; k < n; ++k) y[k] = alpha * tmp_[k] + (beta == 0.0 ? 0.0 : beta * y[k]);
-    }
-  }
-
- private:
-  Teuchos::RCP<const Map> map_;
-  const TangentAction& action_;
-  mutable std::vector<double> tmp_;
-};
 
 // A Teuchos exception's text without its source location and throw count, on one line: "Error, the parameter
 // {name=...} in the parameter (sub)list ... was not found in the list of valid parameters!" (the list that follows
@@ -231,42 +200,39 @@ void KrylovSolver::applyPreconditioner(const double* in, double* out, Teuchos::P
   s.prec->apply(*X, *Y);
 }
 
+bool KrylovSolver::onEveryRank(bool local) const {
+  int all = 0;
+  Teuchos::reduceAll(*impl_->map->getComm(), Teuchos::REDUCE_MIN, local ? 1 : 0, Teuchos::outArg(all));
+  return all == 1;
+}
+
 KrylovOutcome KrylovSolver::solve(const TangentAction& J, const double* rhs, double* dx,
-                                  Teuchos::ParameterList& linearSolver) {
+                                  Teuchos::ParameterList& linearSolver, double* linearResidual) {
   Impl& s = *impl_;
   ensurePreconditioner(linearSolver);
   const WorkTimer timer(s.work ? &s.work->krylovSeconds : nullptr);
   const int maxIterations = linearSolver.get<int>("Max Iterations", 800);
   const int krylov = std::max(1, std::min(linearSolver.get<int>("Size of Krylov Subspace", 200), maxIterations));
-  auto params = Teuchos::rcp(new Teuchos::ParameterList);
-  params->set("Convergence Tolerance", linearSolver.get<double>("Tolerance", 1e-9));
-  params->set("Maximum Iterations", maxIterations);
-  params->set("Num Blocks", krylov);
-  params->set("Maximum Restarts", maxIterations / krylov + 1);
+  const double tolerance = linearSolver.get<double>("Tolerance", 1e-9);
+  const std::size_t n = s.map->getNodeNumElements();
+  const Teuchos::Comm<int>& comm = *s.map->getComm();
+  GmresOperators op;
+  op.apply = J;
+  if (!s.prec.is_null())
+    op.precondition = [&s](const double* in, double* out) {
+      Teuchos::RCP<MV> X = wrap(s.map, in), Y = wrap(s.map, out);
+      s.prec->apply(*X, *Y);
+    };
+  op.sum = [&comm](const double* in, double* out, int count) {
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, count, in, out);
+  };
   // |r| / |r0| with r0 = rhs (dx starts at 0): the forcing term of the inexact Newton step, unpreconditioned
-  // because the preconditioner sits on the right.
-  params->set("Implicit Residual Scaling", "Norm of Initial Residual");
-  params->set("Explicit Residual Scaling", "Norm of Initial Residual");
-  params->set("Verbosity", static_cast<int>(Belos::Errors));
-
-  std::fill(dx, dx + s.map->getNodeNumElements(), 0.0);
-  auto op = Teuchos::rcp(new ActionOperator(s.map, J));
-  Teuchos::RCP<MV> X = wrap(s.map, dx), B = wrap(s.map, rhs);
-  auto problem = Teuchos::rcp(new Belos::LinearProblem<double, MV, OP>(op, X, B));
-  if (!s.prec.is_null()) problem->setRightPrec(s.prec);
-  problem->setProblem();
-  // The problem first, then the parameters: the (problem, list) constructor's order; that constructor is not among
-  // the library's members (the extern template above).
-  Belos::PseudoBlockGmresSolMgr<double, MV, OP> gmres;
-  gmres.setProblem(problem);
-  gmres.setParameters(params);
+  // because the preconditioner sits on the right (as Belos' "Norm of Initial Residual" scaling had it).
+  const GmresResult g = gmres(op, rhs, dx, n, tolerance, maxIterations, krylov, linearResidual);
   KrylovOutcome out;
-  try {
-    out.converged = gmres.solve() == Belos::Converged;
-  } catch (const ActionFailed&) {
-    out.failed = true;
-  }
-  out.iterations = gmres.getNumIters();
+  out.converged = g.converged;
+  out.failed = g.failed;
+  out.iterations = g.iterations;
   if (s.work) s.work->krylovIterations += out.iterations;
   return out;
 }

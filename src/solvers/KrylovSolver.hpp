@@ -1,6 +1,6 @@
 #pragma once
-// Part of the NOX adapter: the Krylov solve of the Newton step on Trilinos' Tpetra stack. The operator is given
-// by its action on plain arrays (matrix-free); the preconditioner (MueLu's smoothed aggregation,
+// Part of the NOX adapter: the Krylov solve of the Newton step. The operator is given by its action on plain
+// arrays (matrix-free) and solved by GMRES (Gmres.hpp); the preconditioner (MueLu's smoothed aggregation,
 // MueLuPreconditioner.hpp, or an Ifpack2 factorisation, per the deck's "Linear Solver" list) is built once, on the
 // first solve, from the assembled pair stiffness (PairStiffness.hpp) and reused by every later solve of the engine.
 #include <Teuchos_ParameterList.hpp>
@@ -37,12 +37,16 @@ class KrylovSolver {
   double scale() const;
   // The space of the Newton vectors (owned dofs, global id 3 * point + component), for NOX's Thyra vectors.
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> space() const;
-  // Solves J dx = rhs from dx = 0 by GMRES with the list's "Tolerance" (relative to |rhs|), "Max Iterations",
-  // "Size of Krylov Subspace" and "Preconditioner" (linearSolverChoice, NoxParameters.hpp). Collective.
-  KrylovOutcome solve(const TangentAction& J, const double* rhs, double* dx, Teuchos::ParameterList& linearSolver);
+  // Solves J dx = rhs from dx = 0 by GMRES (Gmres.hpp) with the list's "Tolerance" (relative to |rhs|), "Max
+  // Iterations", "Size of Krylov Subspace" and "Preconditioner" (linearSolverChoice, NoxParameters.hpp). Collective.
+  // linearResidual (or null): receives rhs - J dx without another product (so J dx = rhs - linearResidual).
+  KrylovOutcome solve(const TangentAction& J, const double* rhs, double* dx, Teuchos::ParameterList& linearSolver,
+                      double* linearResidual = nullptr);
   // out = M⁻¹ in with the preconditioner of the solves (built from the list's choice if no solve has built it yet;
   // the identity for "None"). NOX's preconditioned nonlinear CG direction asks for it. Collective.
   void applyPreconditioner(const double* in, double* out, Teuchos::ParameterList& linearSolver);
+  // True on every rank iff `local` is on every rank. Collective.
+  bool onEveryRank(bool local) const;
 
  private:
   struct Impl;

@@ -116,11 +116,14 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
 
   // Inexact Newton: each Krylov solve is asked only for a tenth of the reduction the force test still
   // needs, instead of a fixed 1e-9 that over-solves every step whose predictor is already close; Newton
-  // stays quadratic while the residual is far from the tolerance.
+  // stays quadratic while the residual is far from the tolerance (forcing()).
+  int evaluations = 0;
+  double first = 0;
   if (adaptiveTolerance)
-    residual.setOnResidual([&ls, test = force.get()](const ResidualNorms& r) {
+    residual.setOnResidual([&, test = force.get()](const ResidualNorms& r) {
       const double need = test->reductionNeeded(r);
-      if (need > 0) ls.set("Tolerance", std::clamp(0.1 * need, 1e-10, 1e-2));
+      const double eta = forcing(need, r.residual, evaluations++, first);
+      if (need > 0) ls.set("Tolerance", eta);
     });
 
   NewtonOutcome out;
@@ -153,12 +156,33 @@ NewtonOutcome NewtonKrylov::solve(Model& model, std::vector<double>& u, double t
     status = NOX::StatusTest::Failed;
   }
   out.converged = status == NOX::StatusTest::Converged && force->getStatus() == NOX::StatusTest::Converged;
+  keepConvergedForce(out.converged ? residual.lastForceAt(u) : nullptr, u);
   out.residual = force->last().residual;
   out.residualDensity = force->last().residualDensity;
   out.tolerance = force->tolerance();
   out.load = force->last().load;
   out.peridigmResidual = force->last().peridigmQuasiStatic;
   return out;
+}
+
+// The Krylov tolerance after the solve's evaluation number k (residual r, the force test's needed reduction
+// `need`): a tenth of need; for the first solve of a step with firstSolveForcing, no less than that times the last
+// first-iteration contraction (the nonlinear error the Newton step is likely to leave). Keeps that contraction.
+double NewtonKrylov::forcing(double need, double r, int k, double& first) {
+  double eta = 0.1 * need;
+  if (k == 0 && opt_.firstSolveForcing > 0 && contraction_ > 0)
+    eta = std::max(eta, opt_.firstSolveForcing * contraction_);
+  if (k == 0) first = r;
+  if (k == 1 && first > 0) contraction_ = r / first;
+  return std::clamp(eta, 1e-10, 1e-2);
+}
+
+void NewtonKrylov::keepConvergedForce(const std::vector<double>* f, const std::vector<double>& u) {
+  converged_ = f != nullptr;
+  if (!f) return;
+  lastModelCall_ = work_.modelCalls();
+  convergedU_ = u;
+  convergedForce_ = *f;
 }
 
 NewtonOutcome NewtonKrylov::solveWithBreaks(Model& model, std::vector<double>& u, double t, const Inertia* inertia,
@@ -173,6 +197,7 @@ NewtonOutcome NewtonKrylov::solveWithBreaks(Model& model, std::vector<double>& u
   }, t);
   o.iterations = iterations;
   o.linearIterations = linear;
+  if (model.hasDamage()) converged_ = false;  // the rounds evaluated the model after the last solve
   return o;
 }
 

@@ -32,6 +32,10 @@ struct NewtonKrylovOptions {
   // it keeps every bond, and cutting further there cost more iterations than it saved; in 3D 2 dx wins.
   // 0: by dimension (defaultPreconditionerRadius).
   double precBondRadius = 0.0;
+  // With the adaptive Krylov tolerance: the first solve of a step asks for no less than this times the residual
+  // contraction the previous step's first Newton iteration reached (the nonlinear error its Newton step leaves:
+  // solving the linear system far below it is wasted); 0: off (a tenth of what the force test needs, as later).
+  double firstSolveForcing = 0.0;
   ParamTree nox;                     // "Direction", "Line Search", "Printing", ... passed to NOX
   std::string where;                 // the deck's solver list ("input.xml: Solver/NOXQuasiStatic"), for errors
 };
@@ -74,6 +78,12 @@ class NewtonKrylov {
   NewtonOutcome solveWithBreaks(Model& model, std::vector<double>& u, double t, const Inertia* inertia = nullptr,
                                 double loadFloor = 0.0);
   const NewtonKrylovOptions& options() const { return opt_; }
+  // After a converged solve: the internal force density at its u if the model's trial state is still that of the
+  // last residual there (a commit then needs no evaluation of its own); null otherwise, after the damage break
+  // rounds (they evaluate between the solves), or once the model has been called by anyone else.
+  const std::vector<double>* convergedForce(const std::vector<double>& u) const {
+    return converged_ && lastModelCall_ == work_.modelCalls() && u == convergedU_ ? &convergedForce_ : nullptr;
+  }
   // The engine's work so far (all its solves).
   const NewtonWork& work() const { return work_; }
 
@@ -81,6 +91,12 @@ class NewtonKrylov {
   NewtonKrylovOptions opt_;
   std::unique_ptr<KrylovSolver> krylov_;  // pair stiffness and its preconditioner: built on first use, kept
   NewtonWork work_;
+  double forcing(double need, double r, int k, double& first);
+  void keepConvergedForce(const std::vector<double>* f, const std::vector<double>& u);  // null: none
+  double contraction_ = -1;  // |F_1| / |F_0| of the last solve's first Newton iteration; < 0: none yet
+  bool converged_ = false;
+  long lastModelCall_ = -1;
+  std::vector<double> convergedU_, convergedForce_;
 };
 
 }  // namespace pf

@@ -18,6 +18,8 @@ struct NewtonWork {
   double seconds = 0;  // in the engine's solves, the preconditioner's build included
   double residualSeconds = 0, tangentSeconds = 0, linearisationSeconds = 0, preconditionerSeconds = 0, buildSeconds = 0;
   double krylovSeconds = 0;  // in GMRES, its products and preconditioner applications included
+  // The model calls so far (each residual, product and linearisation is one): the sequence number of the last one.
+  long modelCalls() const { return residuals + tangentProducts + linearisations; }
   // "NOX work: N Newton iterations, ..." and the seconds of each part with its share of `seconds`.
   std::string summary() const;
 };

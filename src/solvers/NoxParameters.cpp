@@ -57,7 +57,7 @@ LinearSolverChoice linearSolverChoice(Teuchos::ParameterList& ls, const std::str
   const std::string at = where + "/Direction/Newton/Linear Solver: ";
   LinearSolverChoice c;
   const std::string method = ls.get<std::string>("Aztec Solver", "GMRES");
-  if (method != "GMRES") throw InputError(at + "'Aztec Solver' = '" + method + "': only GMRES (Belos) is available");
+  if (method != "GMRES") throw InputError(at + "'Aztec Solver' = '" + method + "': only GMRES is available");
   const std::string type = ls.get<std::string>("Preconditioner", "ML");
   if (type == "ML" || type == "MueLu") {
     c.preconditioner = LinearSolverChoice::Preconditioner::MueLu;

@@ -45,6 +45,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
   o.maxCuts = static_cast<int>(p.get("Maximum Load Step Cuts", o.maxCuts));
   o.newton.verbose = p.flag("Verbose");
   o.newton.precBondRadius = p.get("Preconditioner Bond Radius", o.newton.precBondRadius);
+  o.newton.firstSolveForcing = p.get("First Solve Forcing", o.newton.firstSolveForcing);
   if (p.has("Jacobian")) o.newton.exactJacobian = p.text("Jacobian") == "Exact";
   o.newton.nox = passThrough;
   auto& entries = o.newton.nox.entries;  // Peridigm's adaptive load stepping is Periforge's to read, not NOX's
@@ -75,7 +76,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
 SolverEntry NoxQuasiStaticSolver::entry() {
   SolverEntry e;
   e.name = "NOXQuasiStatic";
-  e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES by Belos, MueLu or Ifpack2 preconditioner)";
+  e.doc = "quasi-static load steps by NOX's Newton-Krylov method (matrix-free GMRES, MueLu or Ifpack2 preconditioner)";
   e.loadSteps = true;
   e.parameters = commonSpecs(false);
   e.parameters.insert(e.parameters.begin(), S::integer("Number of Load Steps", "n: load steps from Initial to Final Time").need().atLeast(1));
@@ -87,6 +88,11 @@ SolverEntry NoxQuasiStaticSolver::entry() {
   e.parameters.push_back(S::real("Preconditioner Bond Radius", "the preconditioner keeps bonds up to this many shortest "
                                                                "bonds long; default 3 when every block is 2D, 2 when "
                                                                "any is 3D (faster there: docs/benchmark-log.md, 'Preconditioner bond radius')").atLeast(1));
+  e.parameters.push_back(S::real("First Solve Forcing", "with the adaptive Krylov tolerance: the first Newton solve of "
+                                                        "a step asks for no less than this times the residual "
+                                                        "contraction of the previous step's first Newton iteration; "
+                                                        "0: off (docs/benchmark-log.md, session 32)")
+                             .byDefault("0").nonNegative());
   e.parameters.push_back(S::text("Jacobian", "the Krylov operator: `Exact` = the materials' directional derivative "
                                              "(consistent tangent of the plastic models) where every block's material "
                                              "has one, else a forward difference; `Finite Difference` = always the "

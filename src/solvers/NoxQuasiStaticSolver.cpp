@@ -51,13 +51,18 @@ void NoxQuasiStaticSolver::startHeat(Model& model) {
   heat_ = std::make_unique<ImplicitFieldStep>(model, "Temperature", heatOptions());
 }
 
-// The model's state is committed from a last force pass at u (the last residual may have been a perturbed one); the
-// heat step reads that pass's trial state (plastic heating); the break rounds end; duPrev = the step's increment.
+// The model's state is committed from a last force pass at u: the Newton solve's last residual when the model has
+// not been called since (NewtonKrylov::convergedForce; a product or a break round may have come after it), else a new
+// one. The heat step reads that pass's trial state (plastic heating); the break rounds end; duPrev = the step's
+// increment.
 void NoxQuasiStaticSolver::commitStep(Model& model, const std::vector<double>& u, const std::vector<double>& uA,
                                       std::vector<double>& duPrev, double tA, double tB) {
   std::vector<double>& f = committedForce_;
   f.resize(static_cast<std::size_t>(model.numDofs()));
-  model.internalForce(u.data(), f.data());
+  if (const std::vector<double>* known = newton_.convergedForce(u))
+    f = *known;
+  else
+    model.internalForce(u.data(), f.data());
   if (heat_) heat_->advance(model, tA, tB, true);
   model.commit();
   model.endBreakRounds();
@@ -120,7 +125,9 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
                  // Peridigm counts each NOX step() call, one even when the step starts converged (NOX then
                  // iterates 0 times), and its own QuasiStatic Newton each iteration (Peridigm.cpp).
                  s.nonlinearIterations = opt_.newton.peridigmAbsolute ? o.iterations : std::max(1, o.iterations);
-                 if (heat_) s.force = &committedForce_;
+                 // The committed pass's force is the step's (a new pass after the commit would redo it from the
+                 // committed state, the same to round-off, for another force evaluation per step).
+                 s.force = &committedForce_;
                  return s;
                },
                resume);
@@ -186,7 +193,7 @@ void NoxQuasiStaticSolver::runAdaptive(Model& model, std::vector<double>& u, std
                    commitStep(model, u, uA, duPrev, tA, tB);
                    inStep = 0;
                    s.outputEveryFactor = outputFactor;
-                   if (heat_) s.force = &committedForce_;
+                   s.force = &committedForce_;
                    return s;
                  }
                  model.rollback();

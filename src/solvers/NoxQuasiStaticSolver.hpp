@@ -55,7 +55,7 @@ class NoxQuasiStaticSolver : public Solver {
 
   NoxOptions opt_;
   std::unique_ptr<ImplicitFieldStep> heat_;
-  std::vector<double> committedForce_;  // the internal force of the last committed step (before its heat step)
+  std::vector<double> committedForce_;  // the last committed step's internal force (before its heat step)
   long step_ = 0;          // the load step being solved, for messages
   NewtonKrylov newton_;    // its preconditioner is built on the first step and kept for the whole run
 };

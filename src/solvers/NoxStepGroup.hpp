@@ -21,6 +21,10 @@ struct StepShared {
   KrylovSolver* krylov = nullptr;
   long linearisedAt = -1;
   long nextPoint = 0;
+  // J d for the last Newton direction d, from the Krylov solve's residual (J d = -F - r): the line search's
+  // slope asks for exactly this product, which would cost another tangent product. jdPoint: the id of its x.
+  long jdPoint = -1;
+  std::vector<double> jdDirection, jd;
 };
 
 class NoxStepGroup : public NOX::Abstract::Group {

@@ -25,11 +25,13 @@ bool StepResidual::evaluate(const double* x, double* F, bool accepted) {
   const std::vector<char>& fixed = model_.prescribedMask();
   const int n = model_.numDofs();
   std::copy(x, x + n, u_.begin());
+  lastCall_ = -1;
   try {
     model_.internalForce(u_.data(), f_.data());
   } catch (const ConstitutiveFailure&) {
     return false;
   }
+  if (work_) lastCall_ = work_->modelCalls();
   if (inertia_)
     for (int k = 0; k < n; ++k)
       if (!fixed[k]) load_[k] = b_[k] - inertia_->coefficient[k] * (x[k] - inertia_->predictor[k]);
@@ -40,6 +42,11 @@ bool StepResidual::evaluate(const double* x, double* F, bool accepted) {
     if (onResidual_) onResidual_(norms());
   }
   return true;
+}
+
+const std::vector<double>* StepResidual::lastForceAt(const std::vector<double>& x) const {
+  if (!work_ || lastCall_ != work_->modelCalls() || x.size() != u_.size()) return nullptr;
+  return std::equal(x.begin(), x.end(), u_.begin()) ? &f_ : nullptr;
 }
 
 ResidualNorms StepResidual::norms() const { return residualNorms(model_, fAccepted_, loadAccepted_); }

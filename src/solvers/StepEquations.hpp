@@ -24,6 +24,9 @@ class StepResidual {
   bool evaluate(const double* x, double* F, bool accepted);
   // Force and load measures at the last accepted evaluation; the inertial force -c (x - u~) counts as load.
   ResidualNorms norms() const;
+  // The internal force density of the last evaluation if it was at x and the model has not been called since
+  // (counted by the NewtonWork given; null without one, or otherwise): the force a new evaluation at x would give.
+  const std::vector<double>* lastForceAt(const std::vector<double>& x) const;
   // Called with the norms of every accepted evaluation (the inexact-Newton tolerance hook).
   void setOnResidual(std::function<void(const ResidualNorms&)> f) { onResidual_ = std::move(f); }
 
@@ -33,6 +36,7 @@ class StepResidual {
   double scale_;
   const Inertia* inertia_;
   NewtonWork* work_;
+  long lastCall_ = -1;  // work_->modelCalls() after the last successful evaluation
   std::vector<double> u_, f_, fAccepted_, b_, load_, loadAccepted_;  // load: b - c (x - u~)
   std::function<void(const ResidualNorms&)> onResidual_;
 };

@@ -6,9 +6,10 @@ the initial state and then the running sum of the NOX steps the solver printed p
 executeNOXQuasiStatic: one NOX::Solver::step() per Newton iteration, one for a solve whose initial guess already
 passes); the tight run must need more of them than the loose one (the count follows the work, not a constant).
 The run's closing "NOX work" line (src/solvers/NewtonWork.hpp, counted where the work happens) must agree with the
-per-step lines (NOX's and Belos' own counts): the same Newton and GMRES totals, one preconditioner build, at least
-one tangent product and one preconditioner application per GMRES iteration, at least one residual per Newton
-iteration and per solve.
+per-step lines (NOX's and GMRES' own counts): the same Newton and GMRES totals, one preconditioner build, exactly
+one tangent product and one preconditioner application per GMRES iteration (src/solvers/Gmres.hpp makes no other:
+none for the initial or an explicit residual, the update from the kept M^-1 v_j, the line search's slope from the
+solve's residual; the bar's tangent is the exact one), at least one residual per Newton iteration and per solve.
 
 usage: check_nox_iterations.py PERIFORGE BAR_NOX_DECK
 """
@@ -67,7 +68,7 @@ def check_work_line(stdout, per_step, tolerance):
         problems.append("GMRES iterations %d, the steps printed %d" % (gmres, linear))
     if builds != 1:
         problems.append("%d preconditioner builds (one per run)" % builds)
-    if products < gmres or applications < gmres:
+    if products != gmres or applications != gmres:
         problems.append("%d products and %d preconditioner applications for %d GMRES iterations"
                         % (products, applications, gmres))
     if linearisations != newton:  # one tangent per Newton direction: the products between reuse it
