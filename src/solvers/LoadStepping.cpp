@@ -7,6 +7,7 @@
 
 #include "FiniteCheck.hpp"
 #include "Progress.hpp"
+#include "SolvedStates.hpp"
 #include "model/Model.hpp"
 #include "Solver.hpp"
 
@@ -36,10 +37,12 @@ ResidualNorms residualNorms(const Model& model, const std::vector<double>& f, co
           std::sqrt(out[0]) + 20.0 * inf};
 }
 
-void predictStep(const Model& model, double t, std::vector<double>& u, const std::vector<double>& duPrev) {
+void predictStep(const Model& model, double t, std::vector<double>& u, const std::vector<double>& duPrev,
+                 const SolvedStates* states) {
   const std::vector<char>& fixed = model.prescribedMask();
   const std::vector<double> before(u);
   model.applyPrescribed(t, u.data());
+  if (states && predictQuadratic(model, *states, u)) return;
   double in[2] = {0, 0}, out[2];
   for (std::size_t k = 0; k < u.size(); ++k)
     if (fixed[k]) {
@@ -55,7 +58,7 @@ void predictStep(const Model& model, double t, std::vector<double>& u, const std
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double, double)>& solveStep,
-                  const SolverResume* resume) {
+                  const SolverResume* resume, SolvedStates* states) {
   using Clock = std::chrono::steady_clock;
   model.requestFieldLoad();  // the load scale's thermal term (residualNorms)
   const int n = model.numDofs();
@@ -63,6 +66,21 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
   std::vector<double> f(n), duPrev(n, 0.0);
   double peakLoad = 0.0;
   SolverCarry carry{{{"Increment", &duPrev}}, {{"Peak Load", 0.0}}};  // the next step's predictor and tolerance
+  if (states) {
+    const char* names[3] = {"Solved State 1", "Solved State 2", "Solved State 3"};
+    for (int k = 0; k < 3; ++k) {
+      if (states->u[k].size() != static_cast<std::size_t>(n)) states->u[k].assign(n, 0.0);
+      carry.vectors.push_back({names[k], &states->u[k]});
+    }
+    carry.scalars.push_back({"Solved States", 0.0});
+    if (resume) {
+      states->count = 0;
+      if (resume->scalars.count("Solved States")) {
+        states->count = static_cast<int>(resume->scalar("Solved States"));
+        for (int k = 0; k < 3; ++k) states->u[k] = resume->vector(names[k]);
+      }
+    }
+  }
   const double t0 = times.front();
   int steps = static_cast<int>(times.size()) - 1;
   if (resume) {
@@ -93,6 +111,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     }
     peakLoad = std::max(peakLoad, s.load);
     carry.scalars[0].second = peakLoad;
+    if (states) carry.scalars[1].second = states->count;
     // f for output; the state is committed already
     if (s.force)
       f = *s.force;

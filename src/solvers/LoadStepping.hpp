@@ -9,6 +9,7 @@ namespace pf {
 class Model;
 class StepObserver;
 struct SolverResume;
+struct SolvedStates;
 
 struct ResidualNorms {
   double residual = 0;         // || (f + b) V || over free dofs (force)
@@ -25,7 +26,9 @@ ResidualNorms residualNorms(const Model& model, const std::vector<double>& f, co
 // Sets the prescribed components of u to their values at t and moves the free ones by the previous
 // step's increment scaled by how the prescribed increment continues it (exact for a linear problem
 // under proportional loading; after a reversal it extrapolates backwards, as the load does).
-void predictStep(const Model& model, double t, std::vector<double>& u, const std::vector<double>& duPrev);
+// states (or null): the quadratic through the last solved states where it applies (SolvedStates.hpp, predictQuadratic).
+void predictStep(const Model& model, double t, std::vector<double>& u, const std::vector<double>& duPrev,
+                 const SolvedStates* states = nullptr);
 
 struct StepStats {
   int iterations = 0;
@@ -57,10 +60,12 @@ inline double loadScale(const ResidualNorms& r, double loadFloor) { return r.loa
 // reports the step with the load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
 // resume (or null): continue after resume->step, whose increment it carries as "Increment" (a restart);
 // each report carries duPrev under that name. times may change during the loop (StepStats::Outcome::Retry).
+// states (or null): the solver's SolvedStates, carried as "Solved State 1..3" and "Solved States" (a checkpoint
+// without them resumes with none kept).
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>& u, std::vector<double>& duPrev, double tA,
                                                 double tB, double loadFloor)>& solveStep,
-                  const SolverResume* resume);
+                  const SolverResume* resume, SolvedStates* states = nullptr);
 
 }  // namespace pf

@@ -46,6 +46,7 @@ std::unique_ptr<Solver> create(const ParameterValues& p, const ParamTree& passTh
   o.newton.verbose = p.flag("Verbose");
   o.newton.precBondRadius = p.get("Preconditioner Bond Radius", o.newton.precBondRadius);
   o.newton.firstSolveForcing = p.get("First Solve Forcing", o.newton.firstSolveForcing);
+  if (p.has("Predictor")) o.quadraticPredictor = p.text("Predictor") == "Quadratic";
   if (p.has("Jacobian")) o.newton.exactJacobian = p.text("Jacobian") == "Exact";
   o.newton.nox = passThrough;
   auto& entries = o.newton.nox.entries;  // Peridigm's adaptive load stepping is Periforge's to read, not NOX's
@@ -93,6 +94,12 @@ SolverEntry NoxQuasiStaticSolver::entry() {
                                                         "contraction of the previous step's first Newton iteration; "
                                                         "0: off (docs/benchmark-log.md, session 32)")
                              .byDefault("0").nonNegative());
+  e.parameters.push_back(S::text("Predictor", "each load step's starting guess for the free dofs: `Linear` = the last "
+                                              "increment scaled to this step's prescribed one; "
+                                              "`Quadratic` = through the last three states where the load keeps its "
+                                              "direction (a large-displacement elastic step starts converged: "
+                                              "docs/benchmark-log.md, session 33)")
+                             .oneOf({"Linear", "Quadratic"}).byDefault("Linear"));
   e.parameters.push_back(S::text("Jacobian", "the Krylov operator: `Exact` = the materials' directional derivative "
                                              "(consistent tangent of the plastic models) where every block's material "
                                              "has one, else a forward difference; `Finite Difference` = always the "

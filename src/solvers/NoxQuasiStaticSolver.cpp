@@ -74,12 +74,13 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
                                                             int depth, double loadFloor) {
   const bool root = model.layout().rank() == 0;
   const std::vector<double> uA(u);
-  predictStep(model, tB, u, duPrev);
+  predictStep(model, tB, u, duPrev, opt_.quadraticPredictor ? &solved_ : nullptr);
   // With damage, Newton solves with the broken set frozen and the breaks are decided at each converged
   // state (BreakRounds.hpp); without, this is one Newton solve.
   Outcome o = newton_.solveWithBreaks(model, u, tB, nullptr, loadFloor);
   if (o.converged) {
     commitStep(model, u, uA, duPrev, tA, tB);
+    if (opt_.quadraticPredictor && o.iterations > 0) solved_.record(u);
     return o;
   }
   model.rollback();
@@ -108,6 +109,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
     return true;
   }, tB);
   commitStep(model, u, uA, duPrev, tA, tB);
+  if (opt_.quadraticPredictor) solved_.record(u);
   return Outcome{true, r.iterations, 0, r.residual, r.tolerance, 0.0, r.load};
 }
 
@@ -130,7 +132,7 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
                  s.force = &committedForce_;
                  return s;
                },
-               resume);
+               resume, opt_.quadraticPredictor ? &solved_ : nullptr);
   printWork(model, newton_.work());
   printHeatWork(model);
 }

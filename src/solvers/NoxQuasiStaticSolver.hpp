@@ -11,6 +11,7 @@
 #include "AdrSolver.hpp"
 #include "ImplicitFieldStep.hpp"
 #include "NewtonKrylov.hpp"
+#include "SolvedStates.hpp"
 #include "Solver.hpp"
 #include "core/SolverEntry.hpp"
 
@@ -19,6 +20,7 @@ namespace pf {
 struct NoxOptions {
   NewtonKrylovOptions newton;  // tolerances, iterations per (sub)step, preconditioner, NOX's lists
   int maxCuts = 4;             // a failing step is halved at most this many times
+  bool quadraticPredictor = false;  // `Predictor` = `Quadratic` (SolvedStates.hpp)
   AdrOptions fallback;
   AdaptiveLoadStepping adaptive;  // Peridigm's QuasiStatic `Adaptive Load-Stepping` (instead of cuts and ADR)
 };
@@ -56,6 +58,7 @@ class NoxQuasiStaticSolver : public Solver {
   NoxOptions opt_;
   std::unique_ptr<ImplicitFieldStep> heat_;
   std::vector<double> committedForce_;  // the last committed step's internal force (before its heat step)
+  SolvedStates solved_;  // the quadratic predictor's states (kept with `Predictor` = `Quadratic` only)
   long step_ = 0;          // the load step being solved, for messages
   NewtonKrylov newton_;    // its preconditioner is built on the first step and kept for the whole run
 };

@@ -41,6 +41,13 @@ add_test(NAME nox_iterations_count COMMAND ${PY} ${REG}/nox_iterations/check_nox
   ${REG}/bar/bar_3d_nox.xml)
 set_tests_properties(nox_iterations_count PROPERTIES LABELS "regression")
 
+# NOXQuasiStatic `Predictor` = `Quadratic` against `Linear` on a coarse elastic bar stretched and released: the step's
+# starting residual falls from the path's second to its third difference, the turn falls back to linear, the same
+# displacements (check_quadratic_predictor.py states the bounds).
+add_test(NAME nox_quadratic_predictor COMMAND ${PY} ${REG}/nox_iterations/check_quadratic_predictor.py ${PERIFORGE_EXE}
+  ${REG}/bar/bar_3d_nox.xml)
+set_tests_properties(nox_quadratic_predictor PROPERTIES LABELS "regression")
+
 # Peridigm-compatibility features on a deck of our own (no Peridigm files needed): user-defined influence
 # function, node-set ids the mesh lacks (dropped with a warning), Verlet acceleration output.
 foreach(np 1 2)
