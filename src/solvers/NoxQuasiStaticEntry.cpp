@@ -96,9 +96,9 @@ SolverEntry NoxQuasiStaticSolver::entry() {
                              .byDefault("0").nonNegative());
   e.parameters.push_back(S::text("Predictor", "each load step's starting guess for the free dofs: `Linear` = the last "
                                               "increment scaled to this step's prescribed one; "
-                                              "`Quadratic` = through the last three states where the load keeps its "
-                                              "direction (a large-displacement elastic step starts converged: "
-                                              "docs/benchmark-log.md, session 33)")
+                                              "`Quadratic` = through the last three solved states where the "
+                                              "prescribed dofs keep one line and direction (large-displacement "
+                                              "elastic steps start converged: docs/benchmark-log.md, session 33)")
                              .oneOf({"Linear", "Quadratic"}).byDefault("Linear"));
   e.parameters.push_back(S::text("Jacobian", "the Krylov operator: `Exact` = the materials' directional derivative "
                                              "(consistent tangent of the plastic models) where every block's material "
