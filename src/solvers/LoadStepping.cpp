@@ -66,21 +66,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
   std::vector<double> f(n), duPrev(n, 0.0);
   double peakLoad = 0.0;
   SolverCarry carry{{{"Increment", &duPrev}}, {{"Peak Load", 0.0}}};  // the next step's predictor and tolerance
-  if (states) {
-    const char* names[3] = {"Solved State 1", "Solved State 2", "Solved State 3"};
-    for (int k = 0; k < 3; ++k) {
-      if (states->u[k].size() != static_cast<std::size_t>(n)) states->u[k].assign(n, 0.0);
-      carry.vectors.push_back({names[k], &states->u[k]});
-    }
-    carry.scalars.push_back({"Solved States", 0.0});
-    if (resume) {
-      states->count = 0;
-      if (resume->scalars.count("Solved States")) {
-        states->count = static_cast<int>(resume->scalar("Solved States"));
-        for (int k = 0; k < 3; ++k) states->u[k] = resume->vector(names[k]);
-      }
-    }
-  }
+  if (states) carryStates(*states, n, resume, carry);
   const double t0 = times.front();
   int steps = static_cast<int>(times.size()) - 1;
   if (resume) {
@@ -111,7 +97,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     }
     peakLoad = std::max(peakLoad, s.load);
     carry.scalars[0].second = peakLoad;
-    if (states) carry.scalars[1].second = states->count;
+    if (states) carry.scalars.back().second = states->count;
     // f for output; the state is committed already
     if (s.force)
       f = *s.force;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "Solver.hpp"
 #include "model/Model.hpp"
 
 namespace pf {
@@ -45,6 +46,21 @@ bool predictQuadratic(const Model& model, const SolvedStates& states, std::vecto
   for (std::size_t k = 0; k < u.size(); ++k)
     if (!fixed[k]) u[k] = wa * a[k] + wb * b[k] + wc * c[k];
   return true;
+}
+
+void carryStates(SolvedStates& states, int n, const SolverResume* resume, SolverCarry& carry) {
+  const char* names[3] = {"Solved State 1", "Solved State 2", "Solved State 3"};
+  for (int k = 0; k < 3; ++k) {
+    if (states.u[k].size() != static_cast<std::size_t>(n)) states.u[k].assign(n, 0.0);
+    carry.vectors.push_back({names[k], &states.u[k]});
+  }
+  carry.scalars.push_back({"Solved States", 0.0});
+  if (!resume) return;
+  states.count = 0;
+  if (resume->scalars.count("Solved States")) {
+    states.count = static_cast<int>(resume->scalar("Solved States"));
+    for (int k = 0; k < 3; ++k) states.u[k] = resume->vector(names[k]);
+  }
 }
 
 }  // namespace pf

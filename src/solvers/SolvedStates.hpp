@@ -9,6 +9,8 @@
 namespace pf {
 
 class Model;
+struct SolverCarry;
+struct SolverResume;
 
 struct SolvedStates {
   std::vector<double> u[3];  // oldest first
@@ -21,5 +23,9 @@ struct SolvedStates {
 // dofs do not move along one line in one direction through them to the next load (a turn of the load, or a
 // non-proportional one). Collective (one reduction).
 bool predictQuadratic(const Model& model, const SolvedStates& states, std::vector<double>& u);
+
+// Adds the states to a load-step loop's carry ("Solved State 1..3", n values each, and last the scalar "Solved States",
+// which the loop keeps at states.count) and, on a resume, takes them from it (none kept when the checkpoint lacks them).
+void carryStates(SolvedStates& states, int n, const SolverResume* resume, SolverCarry& carry);
 
 }  // namespace pf
