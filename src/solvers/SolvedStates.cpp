@@ -1,7 +1,5 @@
 #include "SolvedStates.hpp"
 
-#include <cmath>
-
 #include "Solver.hpp"
 #include "model/Model.hpp"
 
