@@ -55,10 +55,30 @@ void predictStep(const Model& model, double t, std::vector<double>& u, const std
     if (!fixed[k]) u[k] += alpha * duPrev[k];
 }
 
+namespace {
+
+// Adds a solver's own state to the loop's carry (after the loop's "Increment" and "Peak Load") and restores it from a
+// resume that has it.
+void carryOwn(const CarriedState& own, int n, const SolverResume* resume, SolverCarry& carry) {
+  for (const auto& [name, values] : own.vectors) {
+    if (resume && resume->vectors.count(name))
+      *values = resume->vector(name);
+    else if (values->size() != static_cast<std::size_t>(n))
+      values->assign(n, 0.0);
+    carry.vectors.push_back({name, values});
+  }
+  for (const auto& [name, value] : own.scalars) {
+    if (resume && resume->scalars.count(name)) *value = resume->scalar(name);
+    carry.scalars.push_back({name, *value});
+  }
+}
+
+}  // namespace
+
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>&, std::vector<double>&, double, double, double)>& solveStep,
-                  const SolverResume* resume, SolvedStates* states) {
+                  const SolverResume* resume, const CarriedState* own) {
   using Clock = std::chrono::steady_clock;
   model.requestFieldLoad();  // the load scale's thermal term (residualNorms)
   const int n = model.numDofs();
@@ -66,7 +86,7 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
   std::vector<double> f(n), duPrev(n, 0.0);
   double peakLoad = 0.0;
   SolverCarry carry{{{"Increment", &duPrev}}, {{"Peak Load", 0.0}}};  // the next step's predictor and tolerance
-  if (states) carryStates(*states, n, resume, carry);
+  if (own) carryOwn(*own, n, resume, carry);
   const double t0 = times.front();
   int steps = static_cast<int>(times.size()) - 1;
   if (resume) {
@@ -97,7 +117,8 @@ void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, 
     }
     peakLoad = std::max(peakLoad, s.load);
     carry.scalars[0].second = peakLoad;
-    if (states) carry.scalars.back().second = states->count;
+    if (own)
+      for (std::size_t k = 0; k < own->scalars.size(); ++k) carry.scalars[1 + k].second = *own->scalars[k].second;
     // f for output; the state is committed already
     if (s.force)
       f = *s.force;

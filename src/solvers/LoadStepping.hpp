@@ -2,6 +2,8 @@
 // Pieces shared by the quasi-static solvers (relaxation and Newton): the load-step predictor and the
 // residual measures their convergence tests use, so both judge a step the same way.
 #include <functional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace pf {
@@ -10,6 +12,14 @@ class Model;
 class StepObserver;
 struct SolverResume;
 struct SolvedStates;
+
+// What a solver keeps from one load step to the next beyond the loop's own increment and peak load: vectors of n values
+// and scalars it owns. runLoadSteps carries their current values in every report (a checkpoint stores them) and, on a
+// resume, restores each one the checkpoint has (one it lacks keeps the solver's value).
+struct CarriedState {
+  std::vector<std::pair<std::string, std::vector<double>*>> vectors;
+  std::vector<std::pair<std::string, double*>> scalars;
+};
 
 struct ResidualNorms {
   double residual = 0;         // || (f + b) V || over free dofs (force)
@@ -60,12 +70,11 @@ inline double loadScale(const ResidualNorms& r, double loadFloor) { return r.loa
 // reports the step with the load-step rate du/dt as velocity (as Peridigm's quasi-static solvers write it).
 // resume (or null): continue after resume->step, whose increment it carries as "Increment" (a restart);
 // each report carries duPrev under that name. times may change during the loop (StepStats::Outcome::Retry).
-// states (or null): the solver's SolvedStates, carried as "Solved State 1..3" and "Solved States" (a checkpoint
-// without them resumes with none kept).
+// own (or null): the solver's CarriedState.
 void runLoadSteps(Model& model, std::vector<double>& u, std::vector<double>& v, const std::vector<double>& times,
                   StepObserver& observer,
                   const std::function<StepStats(std::vector<double>& u, std::vector<double>& duPrev, double tA,
                                                 double tB, double loadFloor)>& solveStep,
-                  const SolverResume* resume, SolvedStates* states = nullptr);
+                  const SolverResume* resume, const CarriedState* own = nullptr);
 
 }  // namespace pf

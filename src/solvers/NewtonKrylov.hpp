@@ -86,6 +86,9 @@ class NewtonKrylov {
   }
   // The engine's work so far (all its solves).
   const NewtonWork& work() const { return work_; }
+  // The last first Newton iteration's residual contraction that `First Solve Forcing` reads (< 0: none yet): the
+  // solver carries it across a restart.
+  double& firstIterationContraction() { return contraction_; }
 
  private:
   NewtonKrylovOptions opt_;

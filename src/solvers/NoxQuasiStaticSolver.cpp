@@ -119,6 +119,10 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
   if (opt_.adaptive.on) return runAdaptive(model, u, v, times, observer);
   const SolverResume* resume = takeResume();
   step_ = resume ? resume->step : 0;
+  CarriedState own;  // what the next step's predictor and Krylov forcing read
+  if (opt_.quadraticPredictor) solved_.carriedBy(own);
+  if (opt_.newton.firstSolveForcing > 0)
+    own.scalars.push_back({"First Solve Contraction", &newton_.firstIterationContraction()});
   runLoadSteps(model, u, v, times, observer,
                [&](std::vector<double>& u, std::vector<double>& duPrev, double tA, double tB, double loadFloor) {
                  ++step_;
@@ -132,7 +136,7 @@ void NoxQuasiStaticSolver::run(Model& model, std::vector<double>& u, std::vector
                  s.force = &committedForce_;
                  return s;
                },
-               resume, opt_.quadraticPredictor ? &solved_ : nullptr);
+               resume, &own);
   printWork(model, newton_.work());
   printHeatWork(model);
 }

@@ -1,17 +1,18 @@
 #include "SolvedStates.hpp"
 
-#include "Solver.hpp"
+#include "LoadStepping.hpp"
 #include "model/Model.hpp"
 
 namespace pf {
 
 void SolvedStates::record(const std::vector<double>& state) {
-  if (count == 3) {
+  if (count >= 3) {
     u[0].swap(u[1]);
     u[1].swap(u[2]);
-    --count;
+    count = 2;
   }
-  u[count++] = state;
+  u[static_cast<int>(count)] = state;
+  count += 1;
 }
 
 bool predictQuadratic(const Model& model, const SolvedStates& states, std::vector<double>& u) {
@@ -46,19 +47,11 @@ bool predictQuadratic(const Model& model, const SolvedStates& states, std::vecto
   return true;
 }
 
-void carryStates(SolvedStates& states, int n, const SolverResume* resume, SolverCarry& carry) {
-  const char* names[3] = {"Solved State 1", "Solved State 2", "Solved State 3"};
-  for (int k = 0; k < 3; ++k) {
-    if (states.u[k].size() != static_cast<std::size_t>(n)) states.u[k].assign(n, 0.0);
-    carry.vectors.push_back({names[k], &states.u[k]});
-  }
-  carry.scalars.push_back({"Solved States", 0.0});
-  if (!resume) return;
-  states.count = 0;
-  if (resume->scalars.count("Solved States")) {
-    states.count = static_cast<int>(resume->scalar("Solved States"));
-    for (int k = 0; k < 3; ++k) states.u[k] = resume->vector(names[k]);
-  }
+void SolvedStates::carriedBy(CarriedState& own) {
+  own.vectors.push_back({"Solved State 1", &u[0]});
+  own.vectors.push_back({"Solved State 2", &u[1]});
+  own.vectors.push_back({"Solved State 3", &u[2]});
+  own.scalars.push_back({"Solved States", &count});
 }
 
 }  // namespace pf

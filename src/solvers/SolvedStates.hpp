@@ -9,13 +9,15 @@
 namespace pf {
 
 class Model;
-struct SolverCarry;
-struct SolverResume;
+
+struct CarriedState;
 
 struct SolvedStates {
   std::vector<double> u[3];  // oldest first
-  int count = 0;             // how many of u hold states
+  double count = 0;          // how many of u hold states (a double: carried as a checkpoint scalar)
   void record(const std::vector<double>& state);  // the newest; the oldest of three is dropped
+  // Registers u and count with a solver's carried state ("Solved State 1..3", "Solved States").
+  void carriedBy(CarriedState& own);
 };
 
 // u: the newest state with its prescribed dofs already at the next load. Moves u's free dofs to the quadratic through
@@ -23,9 +25,5 @@ struct SolvedStates {
 // dofs do not move along one line in one direction through them to the next load (a turn of the load, or a
 // non-proportional one). Collective (one reduction).
 bool predictQuadratic(const Model& model, const SolvedStates& states, std::vector<double>& u);
-
-// Adds the states to a load-step loop's carry ("Solved State 1..3", n values each, and last the scalar "Solved States",
-// which the loop keeps at states.count) and, on a resume, takes them from it (none kept when the checkpoint lacks them).
-void carryStates(SolvedStates& states, int n, const SolverResume* resume, SolverCarry& carry);
 
 }  // namespace pf
