@@ -20,7 +20,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../../../scripts"))
-from periforge_py import exodus  # noqa: E402
+from periforge_py import exodus, nox_work  # noqa: E402
 import netCDF4  # noqa: E402
 
 LOOSE, TIGHT = 1.0e-3, 1.0e-9
@@ -55,12 +55,11 @@ def run(exe, base, tolerance, work):
 
 def check_work_line(stdout, per_step, tolerance):
     linear = sum(int(n) for n in re.findall(r"\(linear\s+(\d+)\)", stdout))
-    m = re.search(r"NOX work: (\d+) Newton iterations, (\d+) GMRES iterations; (\d+) residuals .*?, (\d+) "
-                  r"linearisations .*?, (\d+) tangent products .*?, (\d+) preconditioner applications .*?, (\d+) "
-                  r"preconditioner builds", stdout)
-    if not m:
+    parsed = nox_work.parse(stdout)
+    if not parsed:
         sys.exit("tolerance %g: no 'NOX work' line in the output" % tolerance)
-    newton, gmres, residuals, linearisations, products, applications, builds = (int(g) for g in m.groups())
+    counts, line = parsed
+    newton, gmres, residuals, linearisations, products, applications, builds = (counts[k] for k in nox_work.COUNTS)
     problems = []
     if newton != sum(per_step):
         problems.append("Newton iterations %d, the steps printed %d" % (newton, sum(per_step)))
@@ -77,7 +76,7 @@ def check_work_line(stdout, per_step, tolerance):
         problems.append("%d residuals for %d Newton iterations in %d solves" % (residuals, newton, len(per_step)))
     if problems:
         sys.exit("tolerance %g: the NOX work line disagrees: %s" % (tolerance, "; ".join(problems)))
-    print("Relative Tolerance %g: %s" % (tolerance, m.group(0)))
+    print("Relative Tolerance %g: %s" % (tolerance, line))
 
 
 def main():
