@@ -45,10 +45,42 @@ periforge_check(plate_iso_coarse_np2_vs_fe plate_iso_coarse_np2
   --ref-dir ${PERIFORGE_SHARED_DIR}/reference/calculix --only fx,residual,peeq
   --fx-tol 0.048 --residual-tol 0.06 --peeq-tol 0.25)
 
-# README's and docs/validation.md's numbers for the paper-resolution plate (a 12-minute run, not in ctest),
-# checked on its stored history docs/data/plate_iso_paper.csv against the FE reference: F_x within 1.81 %
-# at each of the 108 steps where |F_FE| > 10 % of its peak (measured 1.80 % at step 37), residuals within 3 %
-# (measured -1.2 / +2.4 / -0.2 %). Bounds: the quoted numbers rounded up at their last digit.
+# README's and docs/validation.md's numbers for the paper-resolution plate (a 2.5-minute run at np 2, not in ctest),
+# checked on its stored history docs/data/plate_iso_paper.csv (the deck with its Surface Correction) against the
+# shared FE reference: F_x within 1.74 % at each of the 108 steps where |F_FE| > 10 % of its peak (measured 1.73 % at
+# step 37), residuals within 5 % (measured -4.2 / +4.97 / -2.5 %). Bounds: the quoted numbers rounded up at their
+# last digit.
 periforge_check(plate_iso_paper_history_vs_fe "" ${PY} ${PROJECT_SOURCE_DIR}/scripts/validate_plate
   ${PROJECT_SOURCE_DIR}/docs/data/plate_iso_paper.csv --ref-dir ${PERIFORGE_SHARED_DIR}/reference/calculix
-  --only fx,residual --fx-tol 0.0181 --residual-tol 0.03)
+  --only fx,residual --fx-tol 0.0174 --residual-tol 0.05)
+
+# docs/validation.md's before/after table ("Paper resolution against the CalculiX references", issue 38): the stored
+# paper-resolution histories (docs/data/plate_<hardening>_paper.csv with the decks' Surface Correction,
+# *_uncorrected.csv without it; each carries its probe lines, A and B are lattice points) against the repository's
+# finite-strain CalculiX references (examples/plate_with_hole/fe/), judged by validate_plate with the table's numbers
+# rounded up at their last digit: F_x where |F_FE| > 10 % of its peak, residuals at steps 40/80/120, signed von Mises
+# at B (fraction of sigma_y, every step), PEEQ at B at steps 20/60/100. Needs neither ../shared nor ccx.
+foreach(row "iso_paper 0.0173 0.050 0.0267 0.0481" "iso_paper_uncorrected 0.0180 0.0248 0.0500 0.0762"
+            "kin_paper 0.0167 0.0413 0.0381 0.0481" "kin_paper_uncorrected 0.0179 0.0191 0.0651 0.0756"
+            "mixed_paper 0.0119 0.0468 0.0141 0.0246")
+  separate_arguments(f UNIX_COMMAND "${row}")
+  list(GET f 0 stem)
+  list(GET f 1 fx)
+  list(GET f 2 res)
+  list(GET f 3 svm)
+  list(GET f 4 peeq)
+  string(REGEX MATCH "^[a-z]+" hardening "${stem}")
+  periforge_check(plate_${stem}_vs_own_fe "" ${PY} ${PROJECT_SOURCE_DIR}/scripts/validate_plate
+    ${PROJECT_SOURCE_DIR}/docs/data/plate_${stem}.csv
+    --ref ${PROJECT_SOURCE_DIR}/examples/plate_with_hole/fe/plate_${hardening}_finite.csv
+    --only fx,residual,svm,peeq --fx-tol ${fx} --residual-tol ${res} --svm-tol ${svm} --peeq-tol ${peeq})
+endforeach()
+
+# The CalculiX references made in the repository (scripts/plate_fe_reference -> examples/plate_with_hole/fe/: iso in
+# small and finite strain, kin and mixed in finite strain, which ccx 2.20 gets right): the stored iso finite-strain
+# one against the shared reference it must reproduce (the same model): F_x within 2 N at every step (measured
+# 0.48 N), von Mises at A and B within 2 MPa where both runs' PEEQ agree (1.45 MPa) and 8 MPa at the onset of
+# reversed yield, where the state depends on ccx's increments (6.55 MPa at B, step 53). A reference written with
+# another load, material or mesh moves F_x by hundreds of N.
+periforge_check(plate_fe_reference_vs_shared "" ${PY} ${PROJECT_SOURCE_DIR}/scripts/plate_fe_reference
+  --check-stored --shared ${PERIFORGE_SHARED_DIR}/reference/calculix/caseA_iso.csv)
