@@ -69,7 +69,7 @@ periforge_check(plate_iso_paper_uncorrected_history_vs_fe "" ${PY} ${PROJECT_SOU
 # at B (fraction of sigma_y, every step), PEEQ at B at steps 20/60/100. Needs neither ../shared nor ccx.
 foreach(row "iso_paper 0.0173 0.050 0.0267 0.0481" "iso_paper_uncorrected 0.0180 0.0248 0.0500 0.0762"
             "kin_paper 0.0167 0.0413 0.0381 0.0481" "kin_paper_uncorrected 0.0179 0.0191 0.0651 0.0756"
-            "mixed_paper 0.0119 0.0468 0.0141 0.0246")
+            "mixed_paper 0.0119 0.0468 0.0141 0.0246" "mixed_paper_uncorrected 0.0149 0.0207 0.0408 0.0619")
   separate_arguments(f UNIX_COMMAND "${row}")
   list(GET f 0 stem)
   list(GET f 1 fx)
