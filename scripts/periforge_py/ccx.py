@@ -1,6 +1,7 @@
 """Reading CalculiX (ccx 2.20) and gmsh (2.2 ASCII) files for the FE reference scripts (scripts/plane_j2_fe_reference,
-scripts/plate_fe_reference): the 8-node quads of a mesh, the .dat's total reaction, PEEQ and EVOL per increment, the
-.frd's nodal blocks, and the von Mises stress of a nodal stress row."""
+scripts/plate_fe_reference, scripts/beam_fe_reference): the 8-node quads of a mesh, the .dat's total reaction, PEEQ
+and EVOL per increment, the .frd's nodal blocks, the von Mises stress of a nodal stress row; and the J2 material
+cards of linear hardening."""
 import math
 import re
 
@@ -90,3 +91,15 @@ def read_frd(path):
 def von_mises(s):
     sxx, syy, szz, sxy = s[0], s[1], s[2], s[3]
     return math.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy ** 2)
+
+
+def j2_material(e, nu, sy, mod, hardening):
+    """ccx cards of material J2, linear hardening of modulus mod: *PLASTIC tables are (von Mises stress, equivalent
+    plastic strain) pairs; iso, kin (HARDENING=KINEMATIC) or mixed (COMBINED + *CYCLIC HARDENING, both mod)."""
+    table = "%.9g,0.0\n%.9g,1.0\n" % (sy, sy + mod)
+    head = "*MATERIAL, NAME=J2\n*ELASTIC\n%.9g,%.9g\n" % (e, nu)
+    if hardening == "iso":
+        return head + "*PLASTIC\n" + table
+    if hardening == "kin":
+        return head + "*PLASTIC, HARDENING=KINEMATIC\n" + table
+    return head + "*PLASTIC, HARDENING=COMBINED\n" + table + "*CYCLIC HARDENING\n" + table
