@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "CorrespondenceFields.hpp"
+#include "UnrotatedHooke.hpp"
 
 namespace pf {
 
@@ -55,14 +56,6 @@ inline void addBondAssociatedSpecs(std::vector<StateSpec>& s) {
   addBondSpecs(s, "Bond_Left_Stretch_Tensor", false, true);
   addBondSpecs(s, "Bond_Rotation_Tensor", false, true);
   addBondSpecs(s, "Bond_Unrotated_Cauchy_Stress", true, false);
-}
-
-// Hooke's law on a rate-of-deformation increment: 2 mu dev(d) + K tr(d) I.
-inline Mat3 hookeIncrement(double bulk, double shear, const Mat3& d) {
-  Mat3 s = (2.0 * shear) * deviator(d);
-  const double p = bulk * trace(d);
-  s[0] += p, s[4] += p, s[8] += p;
-  return s;
 }
 
 }  // namespace pf

@@ -5,6 +5,7 @@
 
 #include "CorrespondenceFields.hpp"
 #include "CorrespondenceKinematics.hpp"
+#include "UnrotatedHooke.hpp"
 #include "SolidParameters.hpp"
 #include "core/InputError.hpp"
 #include "core/StressDamage.hpp"
@@ -166,26 +167,14 @@ void CorrespondenceMaterial::enableOutput(const std::string& name) const {
   enableTensorOutput(name);
 }
 
-// 1/2 tau : C^-1 : tau = p^2 / (2 K) + s : s / (4 mu), p = tr(tau)/3, s = dev(tau).
 double CorrespondenceMaterial::elasticEnergyDensity(const Mat3& tau) const {
-  const double p = trace(tau) / 3.0;
-  const Mat3 s = deviator(tau);
-  return p * p / (2.0 * moduli_.bulk) + ddot(s, s) / (4.0 * moduli_.shear);
+  return hookeEnergyDensity(moduli_.bulk, moduli_.shear, tau);
 }
 
-// C^-1 : dtau = tr(dtau)/(9 K) I + dev(dtau)/(2 mu), the inverse of elasticIncrement.
-Mat3 CorrespondenceMaterial::elasticStrain(const Mat3& dtau) const {
-  Mat3 e = (1.0 / (2.0 * moduli_.shear)) * deviator(dtau);
-  const double v = trace(dtau) / (9.0 * moduli_.bulk);
-  e[0] += v, e[4] += v, e[8] += v;
-  return e;
-}
+Mat3 CorrespondenceMaterial::elasticStrain(const Mat3& dtau) const { return hookeStrain(moduli_.bulk, moduli_.shear, dtau); }
 
 Mat3 CorrespondenceMaterial::elasticIncrement(const Mat3& de) const {
-  Mat3 s = (2.0 * moduli_.shear) * deviator(de);
-  const double p = moduli_.bulk * trace(de);
-  s[0] += p, s[4] += p, s[8] += p;
-  return s;
+  return hookeIncrement(moduli_.bulk, moduli_.shear, de);
 }
 
 std::vector<double> CorrespondenceMaterial::stepLengths(const FamilyView& fam, StateStore& state) const {

@@ -1,24 +1,16 @@
 #include "DruckerPragerCorrespondenceMaterial.hpp"
 
+#include "CorrespondenceLawParameters.hpp"
+
 namespace pf {
 
 DruckerPragerCorrespondenceMaterial::DruckerPragerCorrespondenceMaterial(const MaterialInput& in)
     : CorrespondenceMaterial(in, "Drucker Prager Correspondence"),
-      law_(druckerPragerLaw(in.get("Friction Angle"), in.get("Cohesion"), in.get("Initial Hardening Parameter"),
-                            in.get("Hardening Rate"), in.get("Dilatancy Ratio"))) {}
+      law_(druckerPragerLawFrom(in)) {}
 
 MaterialEntry DruckerPragerCorrespondenceMaterial::entry() {
-  using P = ParameterSpec;
   std::vector<ParameterSpec> params = commonParameters(RateRule::Midpoint);
-  params.push_back(P::real("Friction Angle", "internal friction angle phi [degrees] of A, B (Li & Geng Eq. 38)")
-                       .need().nonNegative().below(90.0));
-  params.push_back(P::real("Cohesion", "c of B (Eq. 38) [Pa]").need().nonNegative());
-  params.push_back(P::real("Initial Hardening Parameter", "m0 of Eq. A14: initial yield at J = m0 (A I + B)")
-                       .need().positive().atMost(1.0));
-  params.push_back(P::real("Hardening Rate", "h of Eq. A14 (0: perfectly plastic)").need().nonNegative());
-  // [0, 1], not (0, 1]: the paper's Table 2 tests 1-6 use d0 = 0 (plastic flow without volume change).
-  params.push_back(P::real("Dilatancy Ratio", "d0 of the potential g (Eq. 38); 1: associated flow, 0: no dilatancy")
-                       .need().nonNegative().atMost(1.0));
+  for (const ParameterSpec& p : druckerPragerParameters()) params.push_back(p);
   std::vector<std::string> outputs = commonOutputs();
   outputs.push_back("Mean_Stress");
   outputs.push_back("Equivalent_Plastic_Strain");

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "CorrespondenceLawParameters.hpp"
 #include "core/InputError.hpp"
 
 namespace pf {
@@ -36,8 +37,7 @@ const char* summary(Law law) {
 
 void addLawParameters(Law law, std::vector<ParameterSpec>& params) {
   using P = ParameterSpec;
-  if (law == Law::LinearHardening)
-    params.push_back(P::real("Hardening Modulus", "H [Pa]: the yield stress is Y + H eps_p").need());
+  for (const ParameterSpec& p : peridigmJ2Parameters(law == Law::LinearHardening)) params.push_back(p);
   if (law != Law::Needleman) return;
   params.push_back(P::real("Strain Hardening Exponent", "n, of (1 + eps_p/e0)^n").need().nonNegative());
   params.push_back(P::real("Rate Hardening Exponent", "m, of (eps_p' / r0)^m").need().nonNegative());
@@ -50,7 +50,6 @@ void addLawParameters(Law law, std::vector<ParameterSpec>& params) {
 MaterialEntry entryOf(Law law) {
   using P = ParameterSpec;
   std::vector<ParameterSpec> params = CorrespondenceMaterial::commonParameters(CorrespondenceMaterial::RateRule::EndOfStep);
-  params.push_back(P::real("Yield Stress", "Y, the initial yield stress [Pa]").need().positive());
   addLawParameters(law, params);
   if (law != Law::Perfect) {
     params.push_back(P::flag("Enable Flaw", "Peridigm's flaw: Y(x) = Y (1 - m exp(-|x - x_f|^2 / s^2)); "

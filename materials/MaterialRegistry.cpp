@@ -4,7 +4,7 @@
 
 #include "DiffusionMaterial.hpp"
 #include "DruckerPragerCorrespondenceMaterial.hpp"
-#include "ElasticBondAssociatedCorrespondenceMaterial.hpp"
+#include "BondAssociatedCorrespondenceMaterial.hpp"
 #include "ElasticBondBasedMaterial.hpp"
 #include "ElasticCorrespondenceMaterial.hpp"
 #include "ElasticHypoelasticCorrespondenceMaterial.hpp"
@@ -35,7 +35,11 @@ const std::vector<MaterialEntry>& materialRegistry() {
       ElasticPlasticCorrespondenceMaterial::needlemanEntry(),
       ViscoplasticCorrespondenceMaterial::entry(),
       DruckerPragerCorrespondenceMaterial::entry(),
-      ElasticBondAssociatedCorrespondenceMaterial::entry(),
+      BondAssociatedCorrespondenceMaterial::elasticEntry(),
+      BondAssociatedCorrespondenceMaterial::perfectPlasticEntry(),
+      BondAssociatedCorrespondenceMaterial::hardeningEntry(),
+      BondAssociatedCorrespondenceMaterial::viscoplasticEntry(),
+      BondAssociatedCorrespondenceMaterial::druckerPragerEntry(),
       ElasticHypoelasticCorrespondenceMaterial::entry(),
       DiffusionMaterial::entry(),
   };

@@ -4,14 +4,14 @@
 #include <cmath>
 #include <limits>
 
+#include "CorrespondenceLawParameters.hpp"
 #include "core/InputError.hpp"
 
 namespace pf {
 
 ViscoplasticCorrespondenceMaterial::ViscoplasticCorrespondenceMaterial(const MaterialInput& in)
     : CorrespondenceMaterial(in, "Viscoplastic Correspondence"),
-      law_{in.get("Yield Stress"), in.get("Strain Hardening Exponent"), in.get("Rate Sensitivity Exponent"),
-           in.get("Reference Plastic Strain"), in.get("Reference Plastic Strain Rate")} {
+      law_(fosterLawFrom(in)) {
   const char* names[] = {"Melting Temperature", "Reference Temperature", "Thermal Softening Exponent"};
   int given = 0;
   for (const char* n : names) given += in.has(n) ? 1 : 0;
@@ -42,11 +42,7 @@ double ViscoplasticCorrespondenceMaterial::softening(double T) const {
 MaterialEntry ViscoplasticCorrespondenceMaterial::entry() {
   using P = ParameterSpec;
   std::vector<ParameterSpec> params = commonParameters(RateRule::Midpoint);
-  params.push_back(P::real("Yield Stress", "Y, quasi-static yield stress [Pa] (Foster et al. 2010 Eq. 59)").need().positive());
-  params.push_back(P::real("Strain Hardening Exponent", "n of Eq. 59").need().positive());
-  params.push_back(P::real("Rate Sensitivity Exponent", "m of Eq. 58").need().positive());
-  params.push_back(P::real("Reference Plastic Strain", "eps_0 of Eq. 59 (dimensionless)").need().positive());
-  params.push_back(P::real("Reference Plastic Strain Rate", "rate_0 of Eq. 58 [1/s]").need().positive());
+  for (const ParameterSpec& p : fosterParameters()) params.push_back(p);
   params.push_back(P::real("Melting Temperature", "T_m [K] of the thermal softening factor 1 - T*^q, "
                                                   "T* = (T - T_r)/(T_m - T_r) (Johnson-Cook; reads Temperature)"));
   params.push_back(P::real("Reference Temperature", "T_r [K]: the temperature of the fitted flow stress (no "

@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Checks the coarse Taylor-impact run (examples/taylor_impact/taylor_coarse.xml: 8 points across, 200 m/s).
 
-usage: check_taylor.py RUN_DIR [OTHER_NP_RUN_DIR]
+usage: check_taylor.py [--stem NAME] RUN_DIR [OTHER_NP_RUN_DIR]
+(NAME: the deck's output stem, taylor_coarse by default; taylor_coarse_bond_associated is the same bar with
+Viscoplastic Bond Associated Correspondence, whose bounds are the same: none of them depends on the model.)
 
 Final shape (examples/taylor_impact/taylor_measure) against a reference independent of the code, and the
 balance laws of a body whose only external force is the rigid wall:
@@ -47,24 +49,28 @@ MEASURE = os.path.join(HERE, "..", "..", "..", "examples", "taylor_impact", "tay
 V, RHO = 200.0, 2700.0
 
 
-def measure(run):
-    out = subprocess.run([sys.executable, MEASURE, os.path.join(run, "taylor_coarse.e"), "--history",
-                          os.path.join(run, "taylor_coarse_history"), "--velocity", str(V), "--json"],
+def measure(run, stem):
+    out = subprocess.run([sys.executable, MEASURE, os.path.join(run, stem + ".e"), "--history",
+                          os.path.join(run, stem + "_history"), "--velocity", str(V), "--json"],
                          check=True, capture_output=True, text=True).stdout
     return json.loads(out)
 
 
-def node_fields(run):
+def node_fields(run, stem):
     """Every node variable at every output frame, points in coordinate order (the file's own order)."""
-    ds = netCDF4.Dataset(os.path.join(run, "taylor_coarse.e"))
+    ds = netCDF4.Dataset(os.path.join(run, stem + ".e"))
     order = np.lexsort((ds["coordx"][:], ds["coordy"][:], ds["coordz"][:]))
     names = exodus.names(ds, "name_nod_var")
     return {n: np.asarray(ds["vals_nod_var%d" % (k + 1)][:], dtype=float)[:, order] for k, n in enumerate(names)}
 
 
 def main():
-    run = sys.argv[1]
-    m = measure(run)
+    args = sys.argv[1:]
+    stem = "taylor_coarse"
+    if args[:1] == ["--stem"]:
+        stem, args = args[1], args[2:]
+    run = args[0]
+    m = measure(run, stem)
     fails = []
 
     def check(ok, what):
@@ -88,8 +94,8 @@ def main():
     check(abs(m["wall_impulse"] - m["momentum_change"]) <= 1e-9 * mv,
           "wall impulse %.12g = momentum change %.12g N s (1e-9 of m V = %.3g)"
           % (m["wall_impulse"], m["momentum_change"], mv))
-    if len(sys.argv) > 2:
-        a, b = node_fields(run), node_fields(sys.argv[2])
+    if len(args) > 1:
+        a, b = node_fields(run, stem), node_fields(args[1], stem)
         differ = sorted(n for n in a if n not in b or a[n].shape != b[n].shape or not np.array_equal(a[n], b[n]))
         check(a.keys() == b.keys() and not differ,
               "np 1 vs np 2: all %d node variables at all %d frames bit-identical%s"

@@ -1,12 +1,19 @@
 #pragma once
-// "Elastic Bond Associated Correspondence": Peridigm's bond-associated correspondence solid (Chen & Spencer 2019;
-// Peridigm_BondAssociatedCorrespondenceMaterial.cpp, Peridigm_ElasticBondAssociatedCorrespondenceMaterial.cpp).
-// Each bond has its own deformation gradient F_b (the mean of both ends' node gradients corrected along the bond,
-// BondAssociatedKinematics.hpp), its own Flanagan-Taylor polar update and its own hypoelastic stress; the force
-// state takes the bond's Piola stress and the node's stress integral, with no hourglass term.
+// The bond-associated correspondence solids (Chen & Spencer 2019): Peridigm's "Elastic Bond Associated
+// Correspondence" (Peridigm_BondAssociatedCorrespondenceMaterial.cpp, Peridigm_ElasticBondAssociatedCorrespondence-
+// Material.cpp) and, with the same kinematics, the J2 and viscoplastic laws of the standard correspondence models
+// ("Elastic Plastic", "Isotropic Hardening", "Viscoplastic", "Drucker Prager Bond Associated Correspondence"; Peridigm
+// has no plastic bond-associated model). Each bond has its own deformation gradient F_b (the mean of both ends' node gradients
+// corrected along the bond, BondAssociatedKinematics.hpp), its own Flanagan-Taylor polar update and its own stress
+// update (BondStressLaw.hpp); the force state takes the bond's Piola stress and the node's stress integral, with no
+// hourglass term.
 // Stored per bond (history, committed + trial): V_b (9), R_b (9) and the unrotated Cauchy stress (6): 48 doubles,
-// 384 bytes per bond. Per node: Peridigm's node-level F, R, V, d, stress outputs as the other correspondence models.
+// 384 bytes per bond; the plastic laws add the bond's equivalent plastic strain (xi for Drucker-Prager) (2 doubles, 16 bytes). Per node:
+// Peridigm's node-level F, R, V, d, stress outputs (the node's own update with the same law, outputs only).
 // Order 1 gradients only; 3D only; no damage. The force is two-phase (a row of F, F-dot dt, K^-1, w0 per node).
+#include <memory>
+
+#include "BondStressLaw.hpp"
 #include "core/ElasticModuli.hpp"
 #include "core/Material.hpp"
 #include "core/MaterialEntry.hpp"
@@ -14,10 +21,15 @@
 
 namespace pf {
 
-class ElasticBondAssociatedCorrespondenceMaterial : public Material {
+class BondAssociatedCorrespondenceMaterial : public Material {
  public:
-  explicit ElasticBondAssociatedCorrespondenceMaterial(const MaterialInput& in);
-  static MaterialEntry entry();
+  enum class Law { Elastic, PerfectPlastic, IsotropicHardening, Viscoplastic, DruckerPrager };
+  BondAssociatedCorrespondenceMaterial(const MaterialInput& in, Law law);
+  static MaterialEntry elasticEntry();
+  static MaterialEntry perfectPlasticEntry();
+  static MaterialEntry hardeningEntry();
+  static MaterialEntry viscoplasticEntry();
+  static MaterialEntry druckerPragerEntry();
 
   std::vector<StateSpec> stateSpecs() const override;
   // Phase 1 with fam.exchange: the node-level kinematics and stress (outputs) and each owned node's row. Without
@@ -44,11 +56,14 @@ class ElasticBondAssociatedCorrespondenceMaterial : public Material {
   void nodePhase(const FamilyView& fam, const double* y, StateStore& state, double* rows, int stride) const;
   void bondPhase(const FamilyView& fam, const double* y, StateStore& state, const double* rows, int stride,
                  double* force) const;
-  Mat3 elasticIncrement(const Mat3& de) const;  // K tr(de) I + 2 mu dev(de)
+  static void addBondForces(const FamilyView& fam, int i, const std::vector<Mat3>& P, const Mat3& S, const Mat3& Kinv,
+                            double w0, double* force);
 
+  const char* model_;
   ElasticModuli moduli_;
+  std::unique_ptr<BondStressLaw> law_;
   double density_;
-  mutable bool rateWanted_ = false, cauchyWanted_ = false;
+  mutable bool rateWanted_ = false, cauchyWanted_ = false, storedWanted_ = false, dissipatedWanted_ = false;
 };
 
 }  // namespace pf
