@@ -55,6 +55,10 @@ ElasticPlasticMaterial::ElasticPlasticMaterial(const MaterialInput& in, bool har
                                                                 : YieldNormalization::Discrete;
   shearCorrection_ = hardening ? shearCorrectionOf(in, params_.dim) : ignoredShearCorrection(in, "Elastic Plastic");
   alpha_ = in.get("Thermal Expansion Coefficient", 0.0);
+  params_.gradientCorrection = in.text("Gradient Correction") == "Quadratic";
+  if (params_.gradientCorrection && alpha_ != 0.0)
+    throw InputError(in.where() + ": 'Gradient Correction' = Quadratic is not implemented with thermal expansion "
+                                  "('Thermal Expansion Coefficient' given): remove one of them");
   elasticThermal_ = thermalExpansionOf(in, params_.dim, moduli_);
   // J2Thermal (OsbPlasticKernels.hpp): plane strain's thermal strain is hydrostatic (volume term only).
   if (params_.dim == Dimension::PlaneStrain) thermal_ = {0.0, elasticThermal_, 3.0 * alpha_};
@@ -87,6 +91,13 @@ std::vector<ParameterSpec> ElasticPlasticMaterial::parameters(bool hardening) {
                        .oneOf({"Discrete", "Continuum"})
                        .byDefault("Continuum"));
   params.push_back(osbSurfaceCorrection());
+  params.push_back(ParameterSpec::text("Gradient Correction",
+                                       "`Quadratic`: each point reads its state from its bonds with the quadratic part "
+                                       "of the deformation removed (a weighted least-squares fit over its family), so a "
+                                       "surface point's one-sided family reads the strain at the point, not inside the "
+                                       "body (docs/materials.md, \"Gradient correction\"); `None`: the paper's reading")
+                       .oneOf({"None", "Quadratic"})
+                       .byDefault("None"));
   return params;
 }
 

@@ -1,6 +1,7 @@
 #include "OsbPlasticKernels.hpp"
 
 #include "OsbJ2Node.hpp"
+#include "OsbGradientCorrection.hpp"
 
 namespace pf {
 
@@ -54,6 +55,7 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
   osb::FamilyScratch& scr = osb::familyScratch(fam);
   const osb::NodeRecords rec = osb::nodeRecords(fam, y, force);
   const bool prefetchRecords = osb::prefetchRecordsPays(fam, rec);
+  const bool planar = p.dim != Dimension::ThreeD;
   for (int i = fam.begin; i < fam.end; ++i) {
     const int ahead = osb::prefetchFamily(fam, i);
     if (ahead >= 0) {
@@ -63,6 +65,7 @@ PF_INLINE void j2Force(const FamilyView& fam, const J2Parameters& p, const doubl
     if (prefetchRecords) osb::prefetchNeighbourRecords(fam, rec, i);
     // Bond vectors, lengths (one sqrt per bond and step) and neighbour volumes, once per node.
     osb::gatherFamily(fam, rec.pos, i, scr);
+    if (p.gradientCorrection) osb::removeQuadratic<Unit>(fam, i, planar, scr);
     j2Node<Unit>(fam, p, flow, s, i, scr, rec.force);
   }
   osb::storeForces(fam, rec, force);

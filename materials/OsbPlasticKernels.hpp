@@ -26,6 +26,9 @@ struct J2Parameters {
   // Peridigm's "Hardening Modulus" H and its law (PeridigmHardening.hpp) instead of K and H above.
   bool peridigmLaw = false;
   double peridigmHardening = 0.0;
+  // `Gradient Correction` = `Quadratic`: each point reads its bonds with the quadratic part of the deformation removed
+  // (OsbGradientCorrection.hpp); the force and its tangent alike.
+  bool gradientCorrection = false;
   int maxIterations = 10;
   double tolerance = 1e-12;        // relative residual of Eq. 50 (written as sigma_vm - sigma_bar)
 };

@@ -5,6 +5,7 @@
 
 #include "J2ReturnMapping.hpp"
 #include "OsbBondLoops.hpp"
+#include "OsbGradientCorrection.hpp"
 #include "OsbJ2Trial.hpp"
 
 namespace pf {
@@ -222,7 +223,16 @@ PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const
   if (fam.brokenN)
     for (int k = 0; k < n; ++k)
       if (fam.broken[b0 + k] != 0.0) b.e0[k] = b.e1[k] = b.e2[k] = 0.0;
-  const NodeDirection nd = j2NodeDirection<Unit>(fam, p, flow, i, b, tr, nt.r);
+  ProductStreams reading = b;
+  const bool quadratic = p.gradientCorrection;
+  osb::CorrectedBonds& cb = osb::correctedBonds();
+  if (quadratic) {  // the extension's derivative along the corrected bond: Y'.dY'/|Y'| (OsbGradientCorrection.hpp)
+    for (int k = 0; k < n; ++k) cb.p0[k] = b.e0[k], cb.p1[k] = b.e1[k], cb.p2[k] = b.e2[k];
+    osb::subtractQuadratic<Unit>(fam, i, p.dim != Dimension::ThreeD, b.vj, cb.p0.data(), cb.p1.data(), cb.p2.data());
+    reading.d0 = cb.y0.data(), reading.d1 = cb.y1.data(), reading.d2 = cb.y2.data();
+    reading.e0 = cb.p0.data(), reading.e1 = cb.p1.data(), reading.e2 = cb.p2.data();
+  }
+  const NodeDirection nd = j2NodeDirection<Unit>(fam, p, flow, i, reading, tr, nt.r);
   // Force t = omega (iso theta x + dev (e - e^dp)) along M = Y/|Y| (Eqs. 7-13): d(t M) = dt M + t (I - M M^T) dY/|Y|
   // = (dt - t de/|Y|) Y/|Y| + (t/|Y|) dY. The reaction -dT V_i is stored negated (addBondForces).
   const bool plastic = nt.r.dlambda > 0.0;
@@ -239,7 +249,14 @@ PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const
     }
     const Lanes t = osb::weighted<Unit>(ch, b.w, k, iso * theta * x + dev * ((l - x) - ep));
     const Lanes dt = osb::weighted<Unit>(ch, b.w, k, iso * nd.dtheta * x + dev * (dek - dep));
-    const Lanes along = (dt - t * dek * il) * il, across = t * il;
+    Lanes along = (dt - t * dek * il) * il, across = t * il;
+    if (quadratic) {  // direction Y/|Y| (uncorrected): d = Y l'/|Y|, so M.dY = d.dY / l'
+      const Lanes lY = ch.load(cb.lenY.data() + k, 1.0), ilY = 1.0 / lY;
+      const Lanes dekY = (ch.load(b.d0 + k) * ch.load(b.e0 + k) + ch.load(b.d1 + k) * ch.load(b.e1 + k) +
+                          ch.load(b.d2 + k) * ch.load(b.e2 + k)) * il;
+      along = (dt - t * dekY * ilY) * il;
+      across = t * ilY;
+    }
     const Lanes T0 = along * ch.load(b.d0 + k) + across * ch.load(b.e0 + k);
     const Lanes T1 = along * ch.load(b.d1 + k) + across * ch.load(b.e1 + k);
     const Lanes T2 = along * ch.load(b.d2 + k) + across * ch.load(b.e2 + k);
@@ -256,6 +273,7 @@ template <bool Unit>
 PF_INLINE J2NodeTrial j2NodeAt(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const J2Fields& s,
                                const osb::Quad* pos, int i, osb::FamilyScratch& scr) {
   osb::gatherFamily(fam, pos, i, scr);
+  if (p.gradientCorrection) osb::removeQuadratic<Unit>(fam, i, p.dim != Dimension::ThreeD, scr);
   return j2NodeTrial<Unit>(fam, p, flow, s.scf, s.edpN + fam.offsets[i], i, scr, scr.a);
 }
 
