@@ -1,8 +1,8 @@
 #pragma once
-// What the two bond-associated correspondence models (Elastic Bond Associated, Elastic Hypoelastic) share besides
-// their kinematics (BondAssociatedKinematics.hpp) and state (BondTensorFields.hpp): the time since a node's last
-// commit, a row's tensor, a point in messages, the common parameters, outputs and order check, the preconditioner's
-// pair stiffness. Internal to those two materials.
+// What the bond-associated correspondence models (BondAssociatedCorrespondenceMaterial with each of its laws, Elastic
+// Hypoelastic Correspondence) share besides their kinematics (BondAssociatedKinematics.hpp) and state
+// (BondTensorFields.hpp): the time since a node's last commit, a row's tensor, a point in messages, the common
+// parameters, outputs and order check, the preconditioner's pair stiffness. Internal to those materials.
 #include <cmath>
 #include <cstdio>
 #include <string>
