@@ -220,21 +220,22 @@ void BondAssociatedCorrespondenceMaterial::bondPhase(const FamilyView& fam, cons
       }
       const Mat3 F = bondGradient(Fi, rowTensor(rj + kRowF), xi, Y);
       const Mat3 dF = bondGradient(dFi, rowTensor(rj + kRowDF), xi, dY);
-      if (!(det(F) > 0.0)) {
+      const double J = det(F);
+      if (!(J > 0.0)) {
         char buf[300];
-        std::snprintf(buf, sizeof buf, "%s: det F = %.3g <= 0 for the bond from the point at %s to %s", model_, det(F),
+        std::snprintf(buf, sizeof buf, "%s: det F = %.3g <= 0 for the bond from the point at %s to %s", model_, J,
                       pointAt(fam, i).c_str(), pointAt(fam, j).c_str());
         throw ConstitutiveFailure(buf);
       }
-      const PolarUpdate pu = peridigmPolarUpdate(dF, F, Rb.committedAt(b), Vb.committedAt(b));
+      const Mat3 VN = Vb.committedAt(b), tauN = taub.committedAt(b);
+      const PolarUpdate pu = peridigmPolarUpdate(dF, F, Rb.committedAt(b), VN);
       double h = 0.0;
-      const Mat3 tau = law_->update(taub.committedAt(b), history ? epsN[b] : 0.0, pu.dUnrot, step, h);
+      const Mat3 tau = law_->update(tauN, history ? epsN[b] : 0.0, pu.dUnrot, step, h);
       if (history) eps[b] = h;
-      if (stored) storedSum += w * det(F) * hookeEnergyDensity(moduli_.bulk, moduli_.shear, tau);
-      if (dissipated) {
-        const Mat3 tauN = taub.committedAt(b);
+      if (stored) storedSum += w * J * hookeEnergyDensity(moduli_.bulk, moduli_.shear, tau);
+      if (dissipated) {  // J_n = det V_n (det R = 1)
         const Mat3 dp = pu.dUnrot - hookeStrain(moduli_.bulk, moduli_.shear, tau - tauN);
-        dissipatedSum += w * 0.5 * (det(F) + det(Vb.committedAt(b))) * ddot(0.5 * (tau + tauN), dp);
+        dissipatedSum += w * 0.5 * (J + det(VN)) * ddot(0.5 * (tau + tauN), dp);
       }
       Vb.set(b, pu.V), Rb.set(b, pu.R), taub.set(b, tau);
       P[b - first] = piolaFromUnrotated(F, pu.R, tau);
