@@ -18,10 +18,10 @@
 namespace pf {
 namespace osb {
 
-// Solves the symmetric positive definite N x N system M X = R (3 right-hand sides) in place by Cholesky; false when M
-// is not positive definite (to round-off).
+// Cholesky factor of the symmetric positive definite N x N matrix M in place (lower triangle, L L^T = M); false when
+// M is not positive definite (to round-off).
 template <int N>
-inline bool solveSpd(double M[N][N], double R[N][3]) {
+inline bool choleskyFactor(double M[N][N]) {
   for (int c = 0; c < N; ++c) {
     double d = M[c][c];
     for (int k = 0; k < c; ++k) d -= M[c][k] * M[c][k];
@@ -33,20 +33,23 @@ inline bool solveSpd(double M[N][N], double R[N][3]) {
       M[r][c] = v / M[c][c];
     }
   }
-  for (int col = 0; col < 3; ++col) {
-    double z[N];
-    for (int r = 0; r < N; ++r) {
-      double v = R[r][col];
-      for (int k = 0; k < r; ++k) v -= M[r][k] * z[k];
-      z[r] = v / M[r][r];
-    }
-    for (int r = N - 1; r >= 0; --r) {
-      double v = z[r];
-      for (int k = r + 1; k < N; ++k) v -= M[k][r] * R[k][col];
-      R[r][col] = v / M[r][r];
-    }
-  }
   return true;
+}
+
+// Solves L L^T X = R for column col of R (N x 3) in place, L from choleskyFactor.
+template <int N>
+inline void choleskySolve(const double L[N][N], double R[N][3], int col) {
+  double z[N];
+  for (int r = 0; r < N; ++r) {
+    double v = R[r][col];
+    for (int k = 0; k < r; ++k) v -= L[r][k] * z[k];
+    z[r] = v / L[r][r];
+  }
+  for (int r = N - 1; r >= 0; --r) {
+    double v = z[r];
+    for (int k = r + 1; k < N; ++k) v -= L[k][r] * R[k][col];
+    R[r][col] = v / L[r][r];
+  }
 }
 
 // The fit's basis for bond k of node i, xi scaled by 1/delta: the linear terms first (3D: xi0, xi1, xi2, then
@@ -66,40 +69,97 @@ inline void quadraticBasis(const FamilyView& fam, int i, int k, double* phi) {
   phi[6] = e0 * e1, phi[7] = e0 * e2, phi[8] = e1 * e2;
 }
 
-// Subtracts from the vectors (a0, a1, a2) of node i's bonds their weighted least-squares quadratic part (weights
-// omega vj); false (nothing changed) when the fit is singular. Linear in the vectors: the tangent applies it to the
-// direction's bond differences.
+// The fit's sizes: N coefficients per component, the first kLinear of them linear, the last kQuadratic quadratic.
+template <int N>
+constexpr int kLinearOf = N == 5 ? 2 : 3;
+template <int N>
+constexpr int kQuadraticOf = N - kLinearOf<N>;
+// Per point, what the tangent keeps of the fit at its Newton point (kept by J2Tangent; sizes for 3D, the plane uses
+// the first entries): the quadratic rows of M^-1 (the map from the right-hand side sum w phi a to the quadratic
+// coefficients) and the quadratic coefficients of the bond vectors Y.
+constexpr int kMaxFitRows = 6 * 9, kMaxFitCoefficients = 6 * 3;
+
+// The weighted right-hand side R = sum_k w_k phi_k a_k (N x 3) of node i's bonds; with M (lower triangle) the moment
+// matrix sum w phi phi^T when M is given.
 template <bool Unit, int N>
-inline bool subtractQuadraticOf(const FamilyView& fam, int i, const double* vj, double* a0, double* a1, double* a2) {
-  constexpr int kLinear = N == 5 ? 2 : 3;
+inline void fitSums(const FamilyView& fam, int i, const double* vj, const double* a0, const double* a1,
+                    const double* a2, double (*M)[N], double R[N][3]) {
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-  double M[N][N] = {}, R[N][3] = {};
   for (int k = 0; k < n; ++k) {
     const double w = (Unit ? 1.0 : fam.influence[b0 + k]) * vj[k];
     if (w == 0.0) continue;
     double phi[N];
     quadraticBasis<N>(fam, i, k, phi);
     for (int r = 0; r < N; ++r) {
-      for (int c = 0; c <= r; ++c) M[r][c] += w * phi[r] * phi[c];
+      if (M)
+        for (int c = 0; c <= r; ++c) M[r][c] += w * phi[r] * phi[c];
       R[r][0] += w * phi[r] * a0[k], R[r][1] += w * phi[r] * a1[k], R[r][2] += w * phi[r] * a2[k];
     }
   }
-  for (int r = 0; r < N; ++r)
-    for (int c = r + 1; c < N; ++c) M[r][c] = M[c][r];
-  if (!solveSpd<N>(M, R)) return false;
+}
+
+// a -= Q(xi, xi) for node i's bonds, Q's coefficients q (kQuadratic x 3, row-major).
+template <int N>
+inline void subtractFitted(const FamilyView& fam, int i, const double* q, double* a0, double* a1, double* a2) {
+  constexpr int L = kLinearOf<N>;
+  const int n = fam.offsets[i + 1] - fam.offsets[i];
   for (int k = 0; k < n; ++k) {
     double phi[N];
     quadraticBasis<N>(fam, i, k, phi);
-    for (int q = kLinear; q < N; ++q) a0[k] -= phi[q] * R[q][0], a1[k] -= phi[q] * R[q][1], a2[k] -= phi[q] * R[q][2];
+    for (int r = L; r < N; ++r)
+      a0[k] -= phi[r] * q[3 * (r - L)], a1[k] -= phi[r] * q[3 * (r - L) + 1], a2[k] -= phi[r] * q[3 * (r - L) + 2];
   }
+}
+
+// Subtracts from the vectors (a0, a1, a2) of node i's bonds their weighted least-squares quadratic part (weights
+// omega vj); false (nothing changed) when the fit is singular. When q is given it receives the quadratic coefficients
+// (kQuadratic x 3), and rows, when given, the quadratic rows of M^-1 (kQuadratic x N): what subtractKeptFit needs
+// to apply the same fit to other vectors (the fit is linear in them) without forming M again.
+template <bool Unit, int N>
+inline bool subtractQuadraticOf(const FamilyView& fam, int i, const double* vj, double* a0, double* a1, double* a2,
+                                double* q = nullptr, double* rows = nullptr) {
+  constexpr int L = kLinearOf<N>;
+  double M[N][N] = {}, R[N][3] = {};
+  fitSums<Unit, N>(fam, i, vj, a0, a1, a2, M, R);
+  if (!choleskyFactor<N>(M)) return false;
+  for (int col = 0; col < 3; ++col) choleskySolve<N>(M, R, col);
+  double coeff[kMaxFitCoefficients];
+  double* c = q ? q : coeff;
+  for (int r = L; r < N; ++r)
+    for (int col = 0; col < 3; ++col) c[3 * (r - L) + col] = R[r][col];
+  if (rows)
+    for (int r = L; r < N; ++r) {  // row r of M^-1 = column r (M symmetric): the solve of the unit vector e_r
+      double E[N][3] = {};
+      E[r][0] = 1.0;
+      choleskySolve<N>(M, E, 0);
+      for (int col = 0; col < N; ++col) rows[N * (r - L) + col] = E[col][0];
+    }
+  subtractFitted<N>(fam, i, c, a0, a1, a2);
   return true;
+}
+
+// The kept fit applied to other vectors of node i's bonds (the tangent's direction): q = rows . sum w phi a, then
+// a -= Q(xi, xi). The same weights as the fit the rows came from (a broken bond has vj = 0 in both).
+template <bool Unit, int N>
+inline void subtractKeptFit(const FamilyView& fam, int i, const double* vj, const double* rows, double* a0,
+                            double* a1, double* a2) {
+  constexpr int L = kLinearOf<N>;
+  double R[N][3] = {}, q[kMaxFitCoefficients];
+  fitSums<Unit, N>(fam, i, vj, a0, a1, a2, nullptr, R);
+  for (int r = 0; r < N - L; ++r)
+    for (int col = 0; col < 3; ++col) {
+      double v = 0.0;
+      for (int k = 0; k < N; ++k) v += rows[N * r + k] * R[k][col];
+      q[3 * r + col] = v;
+    }
+  subtractFitted<N>(fam, i, q, a0, a1, a2);
 }
 
 template <bool Unit>
 inline bool subtractQuadratic(const FamilyView& fam, int i, bool planar, const double* vj, double* a0, double* a1,
-                              double* a2) {
-  return planar ? subtractQuadraticOf<Unit, 5>(fam, i, vj, a0, a1, a2)
-                : subtractQuadraticOf<Unit, 9>(fam, i, vj, a0, a1, a2);
+                              double* a2, double* q = nullptr, double* rows = nullptr) {
+  return planar ? subtractQuadraticOf<Unit, 5>(fam, i, vj, a0, a1, a2, q, rows)
+                : subtractQuadraticOf<Unit, 9>(fam, i, vj, a0, a1, a2, q, rows);
 }
 
 // Per thread, for the node removeQuadratic read last: its corrected bond vectors Y' = Y - Q(xi, xi), the uncorrected
@@ -114,9 +174,12 @@ inline CorrectedBonds& correctedBonds() {
 }
 
 // The force's reading of node i's gathered family: each bond's length becomes |Y - Q(xi, xi)|, its vector keeps its
-// direction Y/|Y| with that length (the force stays along the deformed bond).
+// direction Y/|Y| with that length (the force stays along the deformed bond). keptQ: Q's coefficients from an earlier
+// fit of the same Y (the tangent's products; subtractQuadraticOf's q), or null to fit here, writing the coefficients
+// to q and the rows of M^-1 to rows when those are given. False where the fit is singular (the bonds read as they are).
 template <bool Unit>
-inline void removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScratch& sc) {
+inline bool removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScratch& sc, const double* keptQ = nullptr,
+                            double* q = nullptr, double* rows = nullptr) {
   const int n = fam.offsets[i + 1] - fam.offsets[i];
   CorrectedBonds& cb = correctedBonds();
   const std::size_t size = static_cast<std::size_t>(n) + 2 * kLanes;
@@ -126,13 +189,19 @@ inline void removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScr
   for (int k = 0; k < n; ++k) c0[k] = sc.d0[k], c1[k] = sc.d1[k], c2[k] = sc.d2[k], cb.lenY[k] = sc.len[k];
   for (std::size_t k = n; k < size; ++k)
     cb.lenY[k] = 1.0, c0[k] = c1[k] = c2[k] = 0.0, cb.p0[k] = cb.p1[k] = cb.p2[k] = 0.0;
-  if (!subtractQuadratic<Unit>(fam, i, planar, sc.vj, c0, c1, c2)) return;
+  if (keptQ) {
+    if (planar) subtractFitted<5>(fam, i, keptQ, c0, c1, c2);
+    else subtractFitted<9>(fam, i, keptQ, c0, c1, c2);
+  } else if (!subtractQuadratic<Unit>(fam, i, planar, sc.vj, c0, c1, c2, q, rows)) {
+    return false;
+  }
   for (int k = 0; k < n; ++k) {
     const double l = std::sqrt(c0[k] * c0[k] + c1[k] * c1[k] + c2[k] * c2[k]);
     const double scale = sc.len[k] > 0.0 ? l / sc.len[k] : 1.0;
     sc.d0[k] *= scale, sc.d1[k] *= scale, sc.d2[k] *= scale;
     sc.len[k] = l;
   }
+  return true;
 }
 
 }  // namespace osb

@@ -213,7 +213,7 @@ PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameter
 template <bool Unit>
 PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const J2Fields& s, int i,
                              const osb::FamilyScratch& scr, const J2NodeTrial& tr, const J2NodeTangent& nt,
-                             const osb::Quad* dpos, osb::Quad* dforce) {
+                             const double* fitRows, const osb::Quad* dpos, osb::Quad* dforce) {
   using osb::Lanes;
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
   const ProductStreams b{fam.refLength + b0, fam.influence + b0, s.edpN + b0, scr.d0, scr.d1, scr.d2, scr.len,
@@ -224,11 +224,14 @@ PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const
     for (int k = 0; k < n; ++k)
       if (fam.broken[b0 + k] != 0.0) b.e0[k] = b.e1[k] = b.e2[k] = 0.0;
   ProductStreams reading = b;
-  const bool quadratic = p.gradientCorrection;
+  const bool quadratic = fitRows != nullptr;  // null: no correction, or a singular fit (the bonds read as they are)
   osb::CorrectedBonds& cb = osb::correctedBonds();
   if (quadratic) {  // the extension's derivative along the corrected bond: Y'.dY'/|Y'| (OsbGradientCorrection.hpp)
     for (int k = 0; k < n; ++k) cb.p0[k] = b.e0[k], cb.p1[k] = b.e1[k], cb.p2[k] = b.e2[k];
-    osb::subtractQuadratic<Unit>(fam, i, p.dim != Dimension::ThreeD, b.vj, cb.p0.data(), cb.p1.data(), cb.p2.data());
+    if (p.dim != Dimension::ThreeD)
+      osb::subtractKeptFit<Unit, 5>(fam, i, b.vj, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
+    else
+      osb::subtractKeptFit<Unit, 9>(fam, i, b.vj, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
     reading.d0 = cb.y0.data(), reading.d1 = cb.y1.data(), reading.d2 = cb.y2.data();
     reading.e0 = cb.p0.data(), reading.e1 = cb.p1.data(), reading.e2 = cb.p2.data();
   }
@@ -268,12 +271,23 @@ PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const
                         dforce);
 }
 
-// Node i's family at y (pos) gathered into scr and its trial state.
+// Node i's family at y (pos) gathered into scr and its trial state. With the gradient correction, fitted here (the
+// linearisation, which keeps the fit in tan) or with the coefficients kept (a product; a singular fit kept none).
 template <bool Unit>
 PF_INLINE J2NodeTrial j2NodeAt(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, const J2Fields& s,
-                               const osb::Quad* pos, int i, osb::FamilyScratch& scr) {
+                               const osb::Quad* pos, int i, osb::FamilyScratch& scr, J2Tangent* keep,
+                               const J2Tangent& kept) {
   osb::gatherFamily(fam, pos, i, scr);
-  if (p.gradientCorrection) osb::removeQuadratic<Unit>(fam, i, p.dim != Dimension::ThreeD, scr);
+  if (p.gradientCorrection) {
+    const std::size_t at = static_cast<std::size_t>(i - fam.begin);
+    const bool planar = p.dim != Dimension::ThreeD;
+    if (keep)
+      keep->fitKept[at] = osb::removeQuadratic<Unit>(fam, i, planar, scr, nullptr,
+                                                     keep->fitQ.data() + at * osb::kMaxFitCoefficients,
+                                                     keep->fitRows.data() + at * osb::kMaxFitRows);
+    else if (kept.fitKept[at])
+      osb::removeQuadratic<Unit>(fam, i, planar, scr, kept.fitQ.data() + at * osb::kMaxFitCoefficients);
+  }
   return j2NodeTrial<Unit>(fam, p, flow, s.scf, s.edpN + fam.offsets[i], i, scr, scr.a);
 }
 
@@ -283,9 +297,15 @@ PF_INLINE bool j2Linearise(const FamilyView& fam, const J2Parameters& p, const d
   const J2Flow flow = j2Flow(p);
   osb::FamilyScratch& scr = osb::familyScratch(fam);
   tan.pos = osb::positionRecords(fam, y, tan.records);
-  tan.node.resize(static_cast<std::size_t>(fam.end > fam.begin ? fam.end - fam.begin : 0));
+  const std::size_t owned = static_cast<std::size_t>(fam.end > fam.begin ? fam.end - fam.begin : 0);
+  tan.node.resize(owned);
+  if (p.gradientCorrection) {
+    tan.fitKept.assign(owned, 0);
+    tan.fitRows.resize(owned * osb::kMaxFitRows);
+    tan.fitQ.resize(owned * osb::kMaxFitCoefficients);
+  }
   for (int i = fam.begin; i < fam.end; ++i) {
-    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, tan.pos, i, scr);
+    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, tan.pos, i, scr, &tan, tan);
     if (!j2NodeLinearise(fam, p, flow, s, i, scr, tr, tan.node[i - fam.begin])) return false;
   }
   return true;
@@ -304,8 +324,10 @@ PF_INLINE void j2TangentProduct(const FamilyView& fam, const J2Parameters& p, co
     const int ahead = osb::prefetchFamily(fam, i);
     if (ahead >= 0) osb::prefetchBondRange(fam, ahead, s.edpN, false);
     if (prefetchRecords) osb::prefetchNeighbourRecords(fam, rec, i, tan.pos);
-    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, tan.pos, i, scr);
-    j2NodeProduct<Unit>(fam, p, flow, s, i, scr, tr, tan.node[i - fam.begin], rec.pos, rec.force);
+    const std::size_t at = static_cast<std::size_t>(i - fam.begin);
+    const J2NodeTrial tr = j2NodeAt<Unit>(fam, p, flow, s, tan.pos, i, scr, nullptr, tan);
+    const double* rows = p.gradientCorrection && tan.fitKept[at] ? tan.fitRows.data() + at * osb::kMaxFitRows : nullptr;
+    j2NodeProduct<Unit>(fam, p, flow, s, i, scr, tr, tan.node[at], rows, rec.pos, rec.force);
   }
   osb::storeForces(fam, rec, dforce);
 }
@@ -313,7 +335,8 @@ PF_INLINE void j2TangentProduct(const FamilyView& fam, const J2Parameters& p, co
 }  // namespace
 
 std::size_t J2Tangent::bytes() const {
-  return node.capacity() * sizeof(J2NodeTangent) + records.capacity() * sizeof(double);
+  return node.capacity() * sizeof(J2NodeTangent) + records.capacity() * sizeof(double) + fitKept.capacity() +
+         (fitRows.capacity() + fitQ.capacity()) * sizeof(double);
 }
 
 PF_KERNEL_CLONES bool osbJ2Linearise(const FamilyView& fam, const J2Parameters& p, const double* y, const J2Fields& s,

@@ -33,6 +33,11 @@ struct J2Tangent {
   std::vector<J2NodeTangent> node;
   std::vector<double> records;    // the buffer behind pos
   const osb::Quad* pos = nullptr;  // (y_j, V_j) per overlap node
+  // `Gradient Correction` = `Quadratic` only, per owned node (OsbGradientCorrection.hpp): whether its fit at y is
+  // regular, the quadratic rows of its M^-1 (osb::kMaxFitRows) and the quadratic coefficients of its Y
+  // (osb::kMaxFitCoefficients), so that a product applies the fit without forming M or fitting Y again.
+  std::vector<unsigned char> fitKept;
+  std::vector<double> fitRows, fitQ;
   std::size_t bytes() const;
 };
 
