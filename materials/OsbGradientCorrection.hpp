@@ -52,75 +52,104 @@ inline void choleskySolve(const double L[N][N], double R[N][3], int col) {
   }
 }
 
-// The fit's basis for bond k of node i, xi scaled by 1/delta: the linear terms first (3D: xi0, xi1, xi2, then
-// xi0^2/2, xi1^2/2, xi2^2/2, xi0 xi1, xi0 xi2, xi1 xi2; planar: xi0, xi1, xi0^2/2, xi1^2/2, xi0 xi1).
-template <int N>
-inline void quadraticBasis(const FamilyView& fam, int i, int k, double* phi) {
-  const int j = fam.neighbors[fam.offsets[i] + k];
-  const double s = 1.0 / fam.horizon;
-  const double e0 = (fam.x[3 * j] - fam.x[3 * i]) * s, e1 = (fam.x[3 * j + 1] - fam.x[3 * i + 1]) * s;
-  if (N == 5) {
-    phi[0] = e0, phi[1] = e1, phi[2] = 0.5 * e0 * e0, phi[3] = 0.5 * e1 * e1, phi[4] = e0 * e1;
-    return;
-  }
-  const double e2 = (fam.x[3 * j + 2] - fam.x[3 * i + 2]) * s;
-  phi[0] = e0, phi[1] = e1, phi[2] = e2;
-  phi[3] = 0.5 * e0 * e0, phi[4] = 0.5 * e1 * e1, phi[5] = 0.5 * e2 * e2;
-  phi[6] = e0 * e1, phi[7] = e0 * e2, phi[8] = e1 * e2;
-}
-
 // The fit's sizes: N coefficients per component, the first kLinear of them linear, the last kQuadratic quadratic.
 template <int N>
 constexpr int kLinearOf = N == 5 ? 2 : 3;
-template <int N>
-constexpr int kQuadraticOf = N - kLinearOf<N>;
 // Per point, what the tangent keeps of the fit at its Newton point (kept by J2Tangent; sizes for 3D, the plane uses
 // the first entries): the quadratic rows of M^-1 (the map from the right-hand side sum w phi a to the quadratic
 // coefficients) and the quadratic coefficients of the bond vectors Y.
 constexpr int kMaxFitRows = 6 * 9, kMaxFitCoefficients = 6 * 3;
 
-// The weighted right-hand side R = sum_k w_k phi_k a_k (N x 3) of node i's bonds; with M (lower triangle) the moment
-// matrix sum w phi phi^T when M is given.
+// Per thread, node i's fit basis and weights (fillFitBasis) and, for the node removeQuadratic read last, its corrected
+// bond vectors Y' = Y - Q(xi, xi), the uncorrected lengths |Y| and room for the tangent's corrected direction dY'.
+// Every array padded to whole chunks past the family with zeros (lengths 1), since the loops read whole lanes.
+struct CorrectedBonds {
+  std::vector<double> y0, y1, y2, lenY, p0, p1, p2;
+  std::vector<double> basis, weight;  // basis[r * stride + k]: term r of bond k (xi / delta); weight omega V_j
+  std::size_t stride = 0;
+  int node = -1;  // the node whose basis is filled
+};
+inline CorrectedBonds& correctedBonds() {
+  static thread_local CorrectedBonds c;
+  return c;
+}
+
+// Fills the basis of node i's bonds, xi scaled by 1/delta, the linear terms first (3D: xi0, xi1, xi2, then
+// xi0^2/2, xi1^2/2, xi2^2/2, xi0 xi1, xi0 xi2, xi1 xi2; planar: xi0, xi1, xi0^2/2, xi1^2/2, xi0 xi1), and the weights
+// omega V_j (vj: the gathered V_j, 0 for a broken bond). Sizes the arrays of cb for the family.
 template <bool Unit, int N>
-inline void fitSums(const FamilyView& fam, int i, const double* vj, const double* a0, const double* a1,
-                    const double* a2, double (*M)[N], double R[N][3]) {
-  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0;
-  for (int k = 0; k < n; ++k) {
-    const double w = (Unit ? 1.0 : fam.influence[b0 + k]) * vj[k];
-    if (w == 0.0) continue;
-    double phi[N];
-    quadraticBasis<N>(fam, i, k, phi);
-    for (int r = 0; r < N; ++r) {
-      if (M)
-        for (int c = 0; c <= r; ++c) M[r][c] += w * phi[r] * phi[c];
-      R[r][0] += w * phi[r] * a0[k], R[r][1] += w * phi[r] * a1[k], R[r][2] += w * phi[r] * a2[k];
+inline void fillFitBasis(const FamilyView& fam, int i, const double* vj, CorrectedBonds& cb) {
+  const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0, padded = roundUpToLanes(n);
+  const std::size_t size = static_cast<std::size_t>(n) + 2 * kLanes;
+  if (cb.y0.size() < size)
+    for (std::vector<double>* v : {&cb.y0, &cb.y1, &cb.y2, &cb.lenY, &cb.p0, &cb.p1, &cb.p2}) v->assign(size, 0.0);
+  if (cb.stride < size) cb.stride = size, cb.basis.assign(9 * size, 0.0), cb.weight.assign(size, 0.0);
+  const std::size_t st = cb.stride;
+  double* phi = cb.basis.data();
+  const double s = 1.0 / fam.horizon, xi0 = fam.x[3 * i], xi1 = fam.x[3 * i + 1], xi2 = fam.x[3 * i + 2];
+  for (int k = 0; k < padded; ++k) {
+    double e0 = 0.0, e1 = 0.0, e2 = 0.0, w = 0.0;
+    if (k < n) {
+      const int j = fam.neighbors[b0 + k];
+      e0 = (fam.x[3 * j] - xi0) * s, e1 = (fam.x[3 * j + 1] - xi1) * s, e2 = (fam.x[3 * j + 2] - xi2) * s;
+      w = (Unit ? 1.0 : fam.influence[b0 + k]) * vj[k];
     }
+    cb.weight[k] = w;
+    if (N == 5) {
+      phi[k] = e0, phi[st + k] = e1, phi[2 * st + k] = 0.5 * e0 * e0, phi[3 * st + k] = 0.5 * e1 * e1;
+      phi[4 * st + k] = e0 * e1;
+      continue;
+    }
+    phi[k] = e0, phi[st + k] = e1, phi[2 * st + k] = e2;
+    phi[3 * st + k] = 0.5 * e0 * e0, phi[4 * st + k] = 0.5 * e1 * e1, phi[5 * st + k] = 0.5 * e2 * e2;
+    phi[6 * st + k] = e0 * e1, phi[7 * st + k] = e0 * e2, phi[8 * st + k] = e1 * e2;
   }
+  cb.node = i;
 }
 
-// a -= Q(xi, xi) for node i's bonds, Q's coefficients q (kQuadratic x 3, row-major).
+// sum_k a_k b_k c_k over whole chunks of kLanes (the padding adds zeros), summed per lane.
+PF_INLINE double tripleSum(int padded, const double* a, const double* b, const double* c) {
+  Lanes acc = {};
+  for (int k = 0; k < padded; k += kLanes) acc += FullChunk{}.load(a + k) * FullChunk{}.load(b + k) * FullChunk{}.load(c + k);
+  return laneSum(acc);
+}
+
+// The weighted right-hand side R = sum_k w_k phi_k a_k (N x 3) of the node whose basis cb holds; with M (lower
+// triangle) the moment matrix sum w phi phi^T when M is given.
 template <int N>
-inline void subtractFitted(const FamilyView& fam, int i, const double* q, double* a0, double* a1, double* a2) {
-  constexpr int L = kLinearOf<N>;
-  const int n = fam.offsets[i + 1] - fam.offsets[i];
-  for (int k = 0; k < n; ++k) {
-    double phi[N];
-    quadraticBasis<N>(fam, i, k, phi);
-    for (int r = L; r < N; ++r)
-      a0[k] -= phi[r] * q[3 * (r - L)], a1[k] -= phi[r] * q[3 * (r - L) + 1], a2[k] -= phi[r] * q[3 * (r - L) + 2];
+inline void fitSums(int n, const CorrectedBonds& cb, const double* a0, const double* a1, const double* a2,
+                    double (*M)[N], double R[N][3]) {
+  const int padded = roundUpToLanes(n);
+  const double *phi = cb.basis.data(), *w = cb.weight.data();
+  for (int r = 0; r < N; ++r) {
+    const double* pr = phi + r * cb.stride;
+    if (M)
+      for (int c = 0; c <= r; ++c) M[r][c] = tripleSum(padded, w, pr, phi + c * cb.stride);
+    R[r][0] = tripleSum(padded, w, pr, a0), R[r][1] = tripleSum(padded, w, pr, a1), R[r][2] = tripleSum(padded, w, pr, a2);
   }
 }
 
-// Subtracts from the vectors (a0, a1, a2) of node i's bonds their weighted least-squares quadratic part (weights
-// omega vj); false (nothing changed) when the fit is singular. When q is given it receives the quadratic coefficients
-// (kQuadratic x 3), and rows, when given, the quadratic rows of M^-1 (kQuadratic x N): what subtractKeptFit needs
-// to apply the same fit to other vectors (the fit is linear in them) without forming M again.
-template <bool Unit, int N>
-inline bool subtractQuadraticOf(const FamilyView& fam, int i, const double* vj, double* a0, double* a1, double* a2,
+// a -= Q(xi, xi) for the bonds of the node whose basis cb holds, Q's coefficients q (kQuadratic x 3, row-major).
+template <int N>
+inline void subtractFitted(int n, const CorrectedBonds& cb, const double* q, double* a0, double* a1, double* a2) {
+  constexpr int L = kLinearOf<N>;
+  for (int r = L; r < N; ++r) {
+    const double* pr = cb.basis.data() + r * cb.stride;
+    const double q0 = q[3 * (r - L)], q1 = q[3 * (r - L) + 1], q2 = q[3 * (r - L) + 2];
+    for (int k = 0; k < n; ++k) a0[k] -= pr[k] * q0, a1[k] -= pr[k] * q1, a2[k] -= pr[k] * q2;
+  }
+}
+
+// Subtracts from the vectors (a0, a1, a2) of node i's bonds their weighted least-squares quadratic part (the basis
+// and weights in cb, fillFitBasis); false (nothing changed) when the fit is singular. When q is given it receives the
+// quadratic coefficients (kQuadratic x 3), and rows, when given, the quadratic rows of M^-1 (kQuadratic x N): what
+// subtractKeptFit needs to apply the same fit to other vectors (the fit is linear in them) without forming M again.
+template <int N>
+inline bool subtractQuadraticOf(int n, const CorrectedBonds& cb, double* a0, double* a1, double* a2,
                                 double* q = nullptr, double* rows = nullptr) {
   constexpr int L = kLinearOf<N>;
   double M[N][N] = {}, R[N][3] = {};
-  fitSums<Unit, N>(fam, i, vj, a0, a1, a2, M, R);
+  fitSums<N>(n, cb, a0, a1, a2, M, R);
   if (!choleskyFactor<N>(M)) return false;
   for (int col = 0; col < 3; ++col) choleskySolve<N>(M, R, col);
   double coeff[kMaxFitCoefficients];
@@ -134,43 +163,25 @@ inline bool subtractQuadraticOf(const FamilyView& fam, int i, const double* vj, 
       choleskySolve<N>(M, E, 0);
       for (int col = 0; col < N; ++col) rows[N * (r - L) + col] = E[col][0];
     }
-  subtractFitted<N>(fam, i, c, a0, a1, a2);
+  subtractFitted<N>(n, cb, c, a0, a1, a2);
   return true;
 }
 
-// The kept fit applied to other vectors of node i's bonds (the tangent's direction): q = rows . sum w phi a, then
-// a -= Q(xi, xi). The same weights as the fit the rows came from (a broken bond has vj = 0 in both).
-template <bool Unit, int N>
-inline void subtractKeptFit(const FamilyView& fam, int i, const double* vj, const double* rows, double* a0,
-                            double* a1, double* a2) {
+// The kept fit applied to other vectors of the bonds of the node whose basis cb holds (the tangent's direction):
+// q = rows . sum w phi a, then a -= Q(xi, xi). The same weights as the fit the rows came from (a broken bond has
+// V_j = 0 in both).
+template <int N>
+inline void subtractKeptFit(int n, const CorrectedBonds& cb, const double* rows, double* a0, double* a1, double* a2) {
   constexpr int L = kLinearOf<N>;
   double R[N][3] = {}, q[kMaxFitCoefficients];
-  fitSums<Unit, N>(fam, i, vj, a0, a1, a2, nullptr, R);
+  fitSums<N>(n, cb, a0, a1, a2, nullptr, R);
   for (int r = 0; r < N - L; ++r)
     for (int col = 0; col < 3; ++col) {
       double v = 0.0;
       for (int k = 0; k < N; ++k) v += rows[N * r + k] * R[k][col];
       q[3 * r + col] = v;
     }
-  subtractFitted<N>(fam, i, q, a0, a1, a2);
-}
-
-template <bool Unit>
-inline bool subtractQuadratic(const FamilyView& fam, int i, bool planar, const double* vj, double* a0, double* a1,
-                              double* a2, double* q = nullptr, double* rows = nullptr) {
-  return planar ? subtractQuadraticOf<Unit, 5>(fam, i, vj, a0, a1, a2, q, rows)
-                : subtractQuadraticOf<Unit, 9>(fam, i, vj, a0, a1, a2, q, rows);
-}
-
-// Per thread, for the node removeQuadratic read last: its corrected bond vectors Y' = Y - Q(xi, xi), the uncorrected
-// lengths |Y|, and room for the tangent's corrected direction dY'. Padded past the family as the scratch is (length 1,
-// vectors 0), since the chunked loops read whole lanes.
-struct CorrectedBonds {
-  std::vector<double> y0, y1, y2, lenY, p0, p1, p2;
-};
-inline CorrectedBonds& correctedBonds() {
-  static thread_local CorrectedBonds c;
-  return c;
+  subtractFitted<N>(n, cb, q, a0, a1, a2);
 }
 
 // The force's reading of node i's gathered family: each bond's length becomes |Y - Q(xi, xi)|, its vector keeps its
@@ -182,17 +193,17 @@ inline bool removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScr
                             double* q = nullptr, double* rows = nullptr) {
   const int n = fam.offsets[i + 1] - fam.offsets[i];
   CorrectedBonds& cb = correctedBonds();
-  const std::size_t size = static_cast<std::size_t>(n) + 2 * kLanes;
-  if (cb.y0.size() < size)
-    for (std::vector<double>* v : {&cb.y0, &cb.y1, &cb.y2, &cb.lenY, &cb.p0, &cb.p1, &cb.p2}) v->assign(size, 0.0);
+  if (planar) fillFitBasis<Unit, 5>(fam, i, sc.vj, cb);
+  else fillFitBasis<Unit, 9>(fam, i, sc.vj, cb);
   double *c0 = cb.y0.data(), *c1 = cb.y1.data(), *c2 = cb.y2.data();
   for (int k = 0; k < n; ++k) c0[k] = sc.d0[k], c1[k] = sc.d1[k], c2[k] = sc.d2[k], cb.lenY[k] = sc.len[k];
-  for (std::size_t k = n; k < size; ++k)
+  for (std::size_t k = n; k < static_cast<std::size_t>(n) + 2 * kLanes; ++k)
     cb.lenY[k] = 1.0, c0[k] = c1[k] = c2[k] = 0.0, cb.p0[k] = cb.p1[k] = cb.p2[k] = 0.0;
   if (keptQ) {
-    if (planar) subtractFitted<5>(fam, i, keptQ, c0, c1, c2);
-    else subtractFitted<9>(fam, i, keptQ, c0, c1, c2);
-  } else if (!subtractQuadratic<Unit>(fam, i, planar, sc.vj, c0, c1, c2, q, rows)) {
+    if (planar) subtractFitted<5>(n, cb, keptQ, c0, c1, c2);
+    else subtractFitted<9>(n, cb, keptQ, c0, c1, c2);
+  } else if (!(planar ? subtractQuadraticOf<5>(n, cb, c0, c1, c2, q, rows)
+                      : subtractQuadraticOf<9>(n, cb, c0, c1, c2, q, rows))) {
     return false;
   }
   for (int k = 0; k < n; ++k) {

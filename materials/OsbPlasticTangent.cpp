@@ -228,10 +228,8 @@ PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const
   osb::CorrectedBonds& cb = osb::correctedBonds();
   if (quadratic) {  // the extension's derivative along the corrected bond: Y'.dY'/|Y'| (OsbGradientCorrection.hpp)
     for (int k = 0; k < n; ++k) cb.p0[k] = b.e0[k], cb.p1[k] = b.e1[k], cb.p2[k] = b.e2[k];
-    if (p.dim != Dimension::ThreeD)
-      osb::subtractKeptFit<Unit, 5>(fam, i, b.vj, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
-    else
-      osb::subtractKeptFit<Unit, 9>(fam, i, b.vj, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
+    if (p.dim != Dimension::ThreeD) osb::subtractKeptFit<5>(n, cb, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
+    else osb::subtractKeptFit<9>(n, cb, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
     reading.d0 = cb.y0.data(), reading.d1 = cb.y1.data(), reading.d2 = cb.y2.data();
     reading.e0 = cb.p0.data(), reading.e1 = cb.p1.data(), reading.e2 = cb.p2.data();
   }
