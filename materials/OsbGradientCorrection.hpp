@@ -78,7 +78,7 @@ inline CorrectedBonds& correctedBonds() {
 // xi0^2/2, xi1^2/2, xi2^2/2, xi0 xi1, xi0 xi2, xi1 xi2; planar: xi0, xi1, xi0^2/2, xi1^2/2, xi0 xi1), and the weights
 // omega V_j (vj: the gathered V_j, 0 for a broken bond). Sizes the arrays of cb for the family.
 template <bool Unit, int N>
-inline void fillFitBasis(const FamilyView& fam, int i, const double* vj, CorrectedBonds& cb) {
+PF_INLINE void fillFitBasis(const FamilyView& fam, int i, const double* vj, CorrectedBonds& cb) {
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0, padded = roundUpToLanes(n);
   const std::size_t size = static_cast<std::size_t>(n) + 2 * kLanes;
   if (cb.y0.size() < size)
@@ -117,7 +117,7 @@ PF_INLINE double tripleSum(int padded, const double* a, const double* b, const d
 // The weighted right-hand side R = sum_k w_k phi_k a_k (N x 3) of the node whose basis cb holds; with M (lower
 // triangle) the moment matrix sum w phi phi^T when M is given.
 template <int N>
-inline void fitSums(int n, const CorrectedBonds& cb, const double* a0, const double* a1, const double* a2,
+PF_INLINE void fitSums(int n, const CorrectedBonds& cb, const double* a0, const double* a1, const double* a2,
                     double (*M)[N], double R[N][3]) {
   const int padded = roundUpToLanes(n);
   const double *phi = cb.basis.data(), *w = cb.weight.data();
@@ -131,10 +131,11 @@ inline void fitSums(int n, const CorrectedBonds& cb, const double* a0, const dou
 
 // a -= Q(xi, xi) for the bonds of the node whose basis cb holds, Q's coefficients q (kQuadratic x 3, row-major).
 template <int N>
-inline void subtractFitted(int n, const CorrectedBonds& cb, const double* q, double* a0, double* a1, double* a2) {
+PF_INLINE void subtractFitted(int n, const CorrectedBonds& cb, const double* q, double* __restrict a0,
+                              double* __restrict a1, double* __restrict a2) {
   constexpr int L = kLinearOf<N>;
   for (int r = L; r < N; ++r) {
-    const double* pr = cb.basis.data() + r * cb.stride;
+    const double* __restrict pr = cb.basis.data() + r * cb.stride;
     const double q0 = q[3 * (r - L)], q1 = q[3 * (r - L) + 1], q2 = q[3 * (r - L) + 2];
     for (int k = 0; k < n; ++k) a0[k] -= pr[k] * q0, a1[k] -= pr[k] * q1, a2[k] -= pr[k] * q2;
   }
@@ -145,7 +146,7 @@ inline void subtractFitted(int n, const CorrectedBonds& cb, const double* q, dou
 // quadratic coefficients (kQuadratic x 3), and rows, when given, the quadratic rows of M^-1 (kQuadratic x N): what
 // subtractKeptFit needs to apply the same fit to other vectors (the fit is linear in them) without forming M again.
 template <int N>
-inline bool subtractQuadraticOf(int n, const CorrectedBonds& cb, double* a0, double* a1, double* a2,
+PF_INLINE bool subtractQuadraticOf(int n, const CorrectedBonds& cb, double* a0, double* a1, double* a2,
                                 double* q = nullptr, double* rows = nullptr) {
   constexpr int L = kLinearOf<N>;
   double M[N][N] = {}, R[N][3] = {};
@@ -171,7 +172,7 @@ inline bool subtractQuadraticOf(int n, const CorrectedBonds& cb, double* a0, dou
 // q = rows . sum w phi a, then a -= Q(xi, xi). The same weights as the fit the rows came from (a broken bond has
 // V_j = 0 in both).
 template <int N>
-inline void subtractKeptFit(int n, const CorrectedBonds& cb, const double* rows, double* a0, double* a1, double* a2) {
+PF_INLINE void subtractKeptFit(int n, const CorrectedBonds& cb, const double* rows, double* a0, double* a1, double* a2) {
   constexpr int L = kLinearOf<N>;
   double R[N][3] = {}, q[kMaxFitCoefficients];
   fitSums<N>(n, cb, a0, a1, a2, nullptr, R);
@@ -184,19 +185,38 @@ inline void subtractKeptFit(int n, const CorrectedBonds& cb, const double* rows,
   subtractFitted<N>(n, cb, q, a0, a1, a2);
 }
 
+// Y and |Y| of n bonds into the corrected-bond arrays (restrict: so that GCC vectorizes the copy, as dropBrokenBonds).
+PF_INLINE void copyBonds(int n, const double* __restrict d0, const double* __restrict d1, const double* __restrict d2,
+                         const double* __restrict len, double* __restrict c0, double* __restrict c1,
+                         double* __restrict c2, double* __restrict lenY) {
+  for (int k = 0; k < n; ++k) c0[k] = d0[k], c1[k] = d1[k], c2[k] = d2[k], lenY[k] = len[k];
+}
+
+// Each bond's length becomes |Y'| (c), its vector Y keeps its direction with that length.
+PF_INLINE void rescaleToCorrected(int n, const double* __restrict c0, const double* __restrict c1,
+                                  const double* __restrict c2, double* __restrict d0, double* __restrict d1,
+                                  double* __restrict d2, double* __restrict len) {
+  for (int k = 0; k < n; ++k) {
+    const double l = std::sqrt(c0[k] * c0[k] + c1[k] * c1[k] + c2[k] * c2[k]);
+    const double scale = len[k] > 0.0 ? l / len[k] : 1.0;
+    d0[k] *= scale, d1[k] *= scale, d2[k] *= scale;
+    len[k] = l;
+  }
+}
+
 // The force's reading of node i's gathered family: each bond's length becomes |Y - Q(xi, xi)|, its vector keeps its
 // direction Y/|Y| with that length (the force stays along the deformed bond). keptQ: Q's coefficients from an earlier
 // fit of the same Y (the tangent's products; subtractQuadraticOf's q), or null to fit here, writing the coefficients
 // to q and the rows of M^-1 to rows when those are given. False where the fit is singular (the bonds read as they are).
 template <bool Unit>
-inline bool removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScratch& sc, const double* keptQ = nullptr,
+PF_INLINE bool removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScratch& sc, const double* keptQ = nullptr,
                             double* q = nullptr, double* rows = nullptr) {
   const int n = fam.offsets[i + 1] - fam.offsets[i];
   CorrectedBonds& cb = correctedBonds();
   if (planar) fillFitBasis<Unit, 5>(fam, i, sc.vj, cb);
   else fillFitBasis<Unit, 9>(fam, i, sc.vj, cb);
   double *c0 = cb.y0.data(), *c1 = cb.y1.data(), *c2 = cb.y2.data();
-  for (int k = 0; k < n; ++k) c0[k] = sc.d0[k], c1[k] = sc.d1[k], c2[k] = sc.d2[k], cb.lenY[k] = sc.len[k];
+  copyBonds(n, sc.d0, sc.d1, sc.d2, sc.len, c0, c1, c2, cb.lenY.data());
   for (std::size_t k = n; k < static_cast<std::size_t>(n) + 2 * kLanes; ++k)
     cb.lenY[k] = 1.0, c0[k] = c1[k] = c2[k] = 0.0, cb.p0[k] = cb.p1[k] = cb.p2[k] = 0.0;
   if (keptQ) {
@@ -206,12 +226,7 @@ inline bool removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScr
                       : subtractQuadraticOf<9>(n, cb, c0, c1, c2, q, rows))) {
     return false;
   }
-  for (int k = 0; k < n; ++k) {
-    const double l = std::sqrt(c0[k] * c0[k] + c1[k] * c1[k] + c2[k] * c2[k]);
-    const double scale = sc.len[k] > 0.0 ? l / sc.len[k] : 1.0;
-    sc.d0[k] *= scale, sc.d1[k] *= scale, sc.d2[k] *= scale;
-    sc.len[k] = l;
-  }
+  rescaleToCorrected(n, c0, c1, c2, sc.d0, sc.d1, sc.d2, sc.len);
   return true;
 }
 
