@@ -164,8 +164,8 @@ if __name__ == "__main__":
         f.write(deck("plate_hole_band_hg1", 1.25e-3, True, N1, 1e-6, " Hourglass Coefficient 1.0.", DU, None, 1.0))
     print("plate_hole_band_hg1")
     # The elastic step's convergence with dx at a lower cost: a 40 mm plate with the same hole (d/W = 0.25), R = 4,
-    # 8 and 16 dx, band on and off; reference plate_hole_ccx.py --side 0.04 (plate_hole_fe_reference_w40.csv).
-    for dx, tag in ((1.25e-3, "r4"), (0.625e-3, "r8"), (0.3125e-3, "r16")):
+    # 8, 16 and 32 dx, band on and off; reference plate_hole_ccx.py --side 0.04 (plate_hole_fe_reference_w40.csv).
+    for dx, tag in ((1.25e-3, "r4"), (0.625e-3, "r8"), (0.3125e-3, "r16"), (0.15625e-3, "r32")):
         for band in (True, False):
             name = f"plate_hole_w40_{tag}{'_band' if band else ''}"
             with open(os.path.join(here, name + ".xml"), "w") as f:
