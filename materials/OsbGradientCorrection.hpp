@@ -3,7 +3,7 @@
 // point's state (dilatation, deviatoric extension, yield) is read from its bonds with the quadratic part of the
 // deformation removed. Per point: the weighted least-squares fit Y_b = A xi_b + Q(xi_b, xi_b) over its family (weights
 // omega V_j, the bonds the kernel counts; 9 coefficients per component in 3D, 5 in the plane), and each bond's length
-// becomes |Y_b - Q(xi_b, xi_b)| with its direction kept. A bond's extension is the strain at its midpoint to second
+// becomes |Y_b - Q(xi_b, xi_b)| with its direction kept (the change limited smoothly to 5 % of |xi_b|: limitedCorrection). A bond's extension is the strain at its midpoint to second
 // order, so a family reads the strain at the centroid of its bonds' midpoints: at the point for a symmetric family,
 // inside the body for a surface point's one-sided family (a bending field's surface strain read low, the yield
 // delayed). After the correction every point reads the affine part at itself. Without enough bonds in general
@@ -64,7 +64,8 @@ constexpr int kMaxFitRows = 6 * 9, kMaxFitCoefficients = 6 * 3;
 // bond vectors Y' = Y - Q(xi, xi), the uncorrected lengths |Y| and room for the tangent's corrected direction dY'.
 // Every array padded to whole chunks past the family with zeros (lengths 1), since the loops read whole lanes.
 struct CorrectedBonds {
-  std::vector<double> y0, y1, y2, lenY, p0, p1, p2;
+  // lenQ: |Y'|; slope: the limiter's derivative g' per bond (limitedCorrection)
+  std::vector<double> y0, y1, y2, lenY, lenQ, slope, p0, p1, p2;
   std::vector<double> basis, weight;  // basis[r * stride + k]: term r of bond k (xi / delta); weight omega V_j
   std::size_t stride = 0;
   int node = -1;  // the node whose basis is filled
@@ -82,7 +83,8 @@ PF_INLINE void fillFitBasis(const FamilyView& fam, int i, const double* vj, Corr
   const int b0 = fam.offsets[i], n = fam.offsets[i + 1] - b0, padded = roundUpToLanes(n);
   const std::size_t size = static_cast<std::size_t>(n) + 2 * kLanes;
   if (cb.y0.size() < size)
-    for (std::vector<double>* v : {&cb.y0, &cb.y1, &cb.y2, &cb.lenY, &cb.p0, &cb.p1, &cb.p2}) v->assign(size, 0.0);
+    for (std::vector<double>* v : {&cb.y0, &cb.y1, &cb.y2, &cb.lenY, &cb.lenQ, &cb.slope, &cb.p0, &cb.p1, &cb.p2})
+      v->assign(size, 0.0);
   if (cb.stride < size) cb.stride = size, cb.basis.assign(9 * size, 0.0), cb.weight.assign(size, 0.0);
   const std::size_t st = cb.stride;
   double* phi = cb.basis.data();
@@ -192,20 +194,43 @@ PF_INLINE void copyBonds(int n, const double* __restrict d0, const double* __res
   for (int k = 0; k < n; ++k) c0[k] = d0[k], c1[k] = d1[k], c2[k] = d2[k], lenY[k] = len[k];
 }
 
-// Each bond's length becomes |Y'| (c), its vector Y keeps its direction with that length.
+// The correction of a bond's length, d = |Y| - |Y'|, is a second-order term: for the smooth fields it is made for it is a
+// small share of |xi| (a bending field's surface layer, the plate's hole edge: below 1e-2). Where the fit takes in a
+// field that is not smooth (a prescribed line of points, a crack tip) it can exceed the bond's whole stretch and even
+// reverse it (|Y'| half of |xi| for a bond stretched 25 %, beside the coarse beam's loaded line): the force is then no
+// longer monotone in the stretch and Newton stalls. So the correction is limited smoothly to kCorrectionLimit |xi|:
+// g(d) = d / sqrt(1 + (d / (c |xi|))^2), which is d to 1e-2 relative below 0.14 c |xi| and at most c |xi|;
+// g'(d) = (1 + (d / (c |xi|))^2)^(-3/2).
+constexpr double kCorrectionLimit = 0.05;
+struct LimitedCorrection {
+  double value, slope;
+};
+PF_INLINE LimitedCorrection limitedCorrection(double d, double xi) {
+  const double r = d / (kCorrectionLimit * xi), q = 1.0 / std::sqrt(1.0 + r * r);
+  return {d * q, q * q * q};
+}
+
+// Each bond's length becomes |Y| - g(|Y| - |Y'|) (c: Y'; limitedCorrection), its vector Y keeps its direction with that
+// length; |Y'| and g' kept for the tangent.
 PF_INLINE void rescaleToCorrected(int n, const double* __restrict c0, const double* __restrict c1,
-                                  const double* __restrict c2, double* __restrict d0, double* __restrict d1,
-                                  double* __restrict d2, double* __restrict len) {
+                                  const double* __restrict c2, const double* __restrict xr, double* __restrict d0,
+                                  double* __restrict d1, double* __restrict d2, double* __restrict len,
+                                  double* __restrict lenQ, double* __restrict slope) {
   for (int k = 0; k < n; ++k) {
-    const double l = std::sqrt(c0[k] * c0[k] + c1[k] * c1[k] + c2[k] * c2[k]);
+    const double lq = std::sqrt(c0[k] * c0[k] + c1[k] * c1[k] + c2[k] * c2[k]);
+    const LimitedCorrection g = limitedCorrection(len[k] - lq, xr[k]);
+    const double l = len[k] - g.value;
     const double scale = len[k] > 0.0 ? l / len[k] : 1.0;
     d0[k] *= scale, d1[k] *= scale, d2[k] *= scale;
     len[k] = l;
+    lenQ[k] = lq;
+    slope[k] = g.slope;
   }
 }
 
-// The force's reading of node i's gathered family: each bond's length becomes |Y - Q(xi, xi)|, its vector keeps its
-// direction Y/|Y| with that length (the force stays along the deformed bond). keptQ: Q's coefficients from an earlier
+// The force's reading of node i's gathered family: each bond's length becomes |Y| - g(|Y| - |Y - Q(xi, xi)|) (g the
+// limiter above; |Y - Q| itself for the small corrections of smooth fields), its vector keeps its direction Y/|Y| with
+// that length (the force stays along the deformed bond). keptQ: Q's coefficients from an earlier
 // fit of the same Y (the tangent's products; subtractQuadraticOf's q), or null to fit here, writing the coefficients
 // to q and the rows of M^-1 to rows when those are given. False where the fit is singular (the bonds read as they are).
 template <bool Unit>
@@ -218,7 +243,7 @@ PF_INLINE bool removeQuadratic(const FamilyView& fam, int i, bool planar, Family
   double *c0 = cb.y0.data(), *c1 = cb.y1.data(), *c2 = cb.y2.data();
   copyBonds(n, sc.d0, sc.d1, sc.d2, sc.len, c0, c1, c2, cb.lenY.data());
   for (std::size_t k = n; k < static_cast<std::size_t>(n) + 2 * kLanes; ++k)
-    cb.lenY[k] = 1.0, c0[k] = c1[k] = c2[k] = 0.0, cb.p0[k] = cb.p1[k] = cb.p2[k] = 0.0;
+    cb.lenY[k] = cb.lenQ[k] = 1.0, cb.slope[k] = 0.0, c0[k] = c1[k] = c2[k] = 0.0, cb.p0[k] = cb.p1[k] = cb.p2[k] = 0.0;
   if (keptQ) {
     if (planar) subtractFitted<5>(n, cb, keptQ, c0, c1, c2);
     else subtractFitted<9>(n, cb, keptQ, c0, c1, c2);
@@ -226,7 +251,8 @@ PF_INLINE bool removeQuadratic(const FamilyView& fam, int i, bool planar, Family
                       : subtractQuadraticOf<9>(n, cb, c0, c1, c2, q, rows))) {
     return false;
   }
-  rescaleToCorrected(n, c0, c1, c2, sc.d0, sc.d1, sc.d2, sc.len);
+  rescaleToCorrected(n, c0, c1, c2, fam.refLength + fam.offsets[i], sc.d0, sc.d1, sc.d2, sc.len, cb.lenQ.data(),
+                     cb.slope.data());
   return true;
 }
 

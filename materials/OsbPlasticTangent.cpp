@@ -149,9 +149,11 @@ PF_INLINE osb::Lanes plasticDerivative(const ProductStreams& b, const NodeDirect
 // c d theta_tr x) (Eqs. 40-41) the moments dP1 = 2 sum t^d dt^d V and d(t^d . x) follow from sums of this pass, and
 // from them the return's derivative. Then, for plane stress and 3D, d theta of the plastic extension (J2Flow::beta).
 // Padded lanes: y_j - y_i = 0, len 1 (the fill of a block's last family too), V_j 0: they add nothing.
+// deGiven: de is in b.de already (the gradient correction's limited reading, j2NodeProduct), not M . (dy_j - dy_i).
 template <bool Unit>
 PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameters& p, const J2Flow& flow, int i,
-                                        const ProductStreams& b, const J2NodeTrial& tr, const OsbJ2Return& r) {
+                                        const ProductStreams& b, const J2NodeTrial& tr, const OsbJ2Return& r,
+                                        bool deGiven) {
   using osb::Lanes;
   const int n = fam.offsets[i + 1] - fam.offsets[i];
   const bool inBlock = osb::chunksStayInBlock(fam, i), plastic = r.dlambda > 0.0;
@@ -160,9 +162,14 @@ PF_INLINE NodeDirection j2NodeDirection(const FamilyView& fam, const J2Parameter
   Lanes S = {}, TdDe = {}, TdX = {}, WXX = {}, W2De = {};
   osb::forEachChunk(n, inBlock, [&](int k, auto ch) {
     const Lanes x = ch.load(b.xr + k), v = ch.load(b.vj + k);
-    const Lanes dek = (ch.load(b.d0 + k) * ch.load(b.e0 + k) + ch.load(b.d1 + k) * ch.load(b.e1 + k) +
-                       ch.load(b.d2 + k) * ch.load(b.e2 + k)) / ch.load(b.len + k, 1.0);
-    osb::FullChunk{}.store(b.de + k, dek);
+    Lanes dek;
+    if (deGiven) {
+      dek = osb::FullChunk{}.load(b.de + k);
+    } else {
+      dek = (ch.load(b.d0 + k) * ch.load(b.e0 + k) + ch.load(b.d1 + k) * ch.load(b.e1 + k) +
+             ch.load(b.d2 + k) * ch.load(b.e2 + k)) / ch.load(b.len + k, 1.0);
+      osb::FullChunk{}.store(b.de + k, dek);
+    }
     const Lanes wv = osb::weighted<Unit>(ch, b.w, k, v);
     S += wv * x * dek;
     if (plastic) {
@@ -223,17 +230,24 @@ PF_INLINE void j2NodeProduct(const FamilyView& fam, const J2Parameters& p, const
   if (fam.brokenN)
     for (int k = 0; k < n; ++k)
       if (fam.broken[b0 + k] != 0.0) b.e0[k] = b.e1[k] = b.e2[k] = 0.0;
-  ProductStreams reading = b;
   const bool quadratic = fitRows != nullptr;  // null: no correction, or a singular fit (the bonds read as they are)
   osb::CorrectedBonds& cb = osb::correctedBonds();
-  if (quadratic) {  // the extension's derivative along the corrected bond: Y'.dY'/|Y'| (OsbGradientCorrection.hpp)
+  if (quadratic) {
+    // The reading's derivative: l = |Y| - g(|Y| - |Y'|) (OsbGradientCorrection.hpp, limitedCorrection), so
+    // dl = (1 - g') M.dY + g' Y'.dY'/|Y'|, M.dY = d.dY / l (d = Y l/|Y|), dY' the direction's bond differences with the
+    // kept fit's quadratic part taken out.
     for (int k = 0; k < n; ++k) cb.p0[k] = b.e0[k], cb.p1[k] = b.e1[k], cb.p2[k] = b.e2[k];
     if (p.dim != Dimension::ThreeD) osb::subtractKeptFit<5>(n, cb, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
     else osb::subtractKeptFit<9>(n, cb, fitRows, cb.p0.data(), cb.p1.data(), cb.p2.data());
-    reading.d0 = cb.y0.data(), reading.d1 = cb.y1.data(), reading.d2 = cb.y2.data();
-    reading.e0 = cb.p0.data(), reading.e1 = cb.p1.data(), reading.e2 = cb.p2.data();
+    for (int k = 0; k < n; ++k) {
+      const double mdy = (b.d0[k] * b.e0[k] + b.d1[k] * b.e1[k] + b.d2[k] * b.e2[k]) / b.len[k];
+      const double lq = cb.lenQ[k];
+      const double qdy = lq > 0.0 ? (cb.y0[k] * cb.p0[k] + cb.y1[k] * cb.p1[k] + cb.y2[k] * cb.p2[k]) / lq : 0.0;
+      b.de[k] = mdy + cb.slope[k] * (qdy - mdy);
+    }
+    for (int k = n; k < osb::roundUpToLanes(n); ++k) b.de[k] = 0.0;
   }
-  const NodeDirection nd = j2NodeDirection<Unit>(fam, p, flow, i, reading, tr, nt.r);
+  const NodeDirection nd = j2NodeDirection<Unit>(fam, p, flow, i, b, tr, nt.r, quadratic);
   // Force t = omega (iso theta x + dev (e - e^dp)) along M = Y/|Y| (Eqs. 7-13): d(t M) = dt M + t (I - M M^T) dY/|Y|
   // = (dt - t de/|Y|) Y/|Y| + (t/|Y|) dY. The reaction -dT V_i is stored negated (addBondForces).
   const bool plastic = nt.r.dlambda > 0.0;

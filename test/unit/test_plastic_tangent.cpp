@@ -24,6 +24,7 @@
 #include "LatticeFixture.hpp"
 #include "materialpoint/MaterialPoint.hpp"
 #include "materials/ElasticPlasticMaterial.hpp"
+#include "materials/OsbGradientCorrection.hpp"
 
 namespace {
 
@@ -265,6 +266,47 @@ TEST(PlasticTangent, MatchesCentralDifferencesWithGradientCorrection) {
       EXPECT_LT(err, kTol);
       EXPECT_GT(errPlain, 1e2 * kTol);
     }
+  }
+}
+
+// The same where the correction is limited (OsbGradientCorrection.hpp, limitedCorrection): a field that is not smooth on
+// the lattice scale (each node moved at random by up to 0.2 dx on top of the yielding deformation, as beside a
+// prescribed line of points) makes the fitted quadratic part of many bonds a sizeable share of |xi|, where g' is well
+// below 1; the tangent carries g'. Bound kTol as above; the same tangent with g' taken as 1 (the correction unlimited)
+// misses it by far (checked by hand: 0.47 to 0.53).
+TEST(PlasticTangent, MatchesCentralDifferencesWhereTheGradientCorrectionIsLimited) {
+  for (Dimension dim : kDims) {
+    const pftest::Lattice L = lattice(dim);
+    auto mat = makeModel(kModels[3], dim, true);
+    SCOPED_TRACE(pf::toString(dim));
+    pf::StateStore st;
+    st.allocate(mat->stateSpecs(), L.numQueries, L.fam.numBonds());
+    std::vector<double> y = deformed(L, kCases[1].s2);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-0.2 * kDx, 0.2 * kDx);
+    for (int q = 0; q < L.numNodes; ++q)
+      for (int a = 0; a < (L.planar ? 2 : 3); ++a) y[3 * q + a] += u(rng);
+    force(L, *mat, st, y);
+    const std::vector<double> dy = direction(L, 11);
+    const double err = centralError(L, *mat, st, y, dy, tangent(L, *mat, st, y, dy), kStep);
+    std::printf("[PlasticTangent] limited gradient correction %s: err %.1e\n", pf::toString(dim), err);
+    EXPECT_LT(err, kTol);
+  }
+}
+
+// The limiter itself: g(d) = d to 1e-2 relative below 0.14 c |xi|, |g| < c |xi| always, odd, g' its derivative (central
+// differences, 1e-7 relative: the difference's truncation at h = 1e-6 |xi|).
+TEST(GradientCorrectionLimit, IsTheCorrectionWhenSmallBoundedAndSmooth) {
+  const double xi = 2e-3, c = pf::osb::kCorrectionLimit;
+  for (double d : {1e-6 * xi, 0.1 * c * xi, 0.14 * c * xi}) {
+    EXPECT_NEAR(pf::osb::limitedCorrection(d, xi).value, d, 1e-2 * d);
+    EXPECT_EQ(pf::osb::limitedCorrection(-d, xi).value, -pf::osb::limitedCorrection(d, xi).value);
+  }
+  for (double d : {0.5 * c * xi, 2.0 * c * xi, 0.6 * xi, 10.0 * xi}) {
+    EXPECT_LT(std::fabs(pf::osb::limitedCorrection(d, xi).value), c * xi);
+    const double h = 1e-6 * xi;
+    const double fd = (pf::osb::limitedCorrection(d + h, xi).value - pf::osb::limitedCorrection(d - h, xi).value) / (2 * h);
+    EXPECT_NEAR(pf::osb::limitedCorrection(d, xi).slope, fd, 1e-7 * std::max(1.0, fd));
   }
 }
 
