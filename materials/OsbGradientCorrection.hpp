@@ -3,11 +3,12 @@
 // point's state (dilatation, deviatoric extension, yield) is read from its bonds with the quadratic part of the
 // deformation removed. Per point: the weighted least-squares fit Y_b = A xi_b + Q(xi_b, xi_b) over its family (weights
 // omega V_j, the bonds the kernel counts; 9 coefficients per component in 3D, 5 in the plane), and each bond's length
-// becomes |Y_b - Q(xi_b, xi_b)| with its direction kept (the change limited smoothly to 5 % of |xi_b|: limitedCorrection). A bond's extension is the strain at its midpoint to second
-// order, so a family reads the strain at the centroid of its bonds' midpoints: at the point for a symmetric family,
-// inside the body for a surface point's one-sided family (a bending field's surface strain read low, the yield
-// delayed). After the correction every point reads the affine part at itself. Without enough bonds in general
-// position for the fit (a singular moment matrix) a point reads its bonds as they are.
+// becomes |Y_b - Q(xi_b, xi_b)| with its direction kept (the change limited smoothly to 5 % of |xi_b|:
+// limitedCorrection). A bond's extension is the strain at its midpoint to second order, so a family reads the strain
+// at the centroid of its bonds' midpoints: at the point for a symmetric family, inside the body for a surface point's
+// one-sided family (a bending field's surface strain read low, the yield delayed). After the correction every point
+// reads the affine part at itself. Without enough bonds in general position for the fit (a singular moment matrix) a
+// point reads its bonds as they are.
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -68,7 +69,6 @@ struct CorrectedBonds {
   std::vector<double> y0, y1, y2, lenY, lenQ, slope, p0, p1, p2;
   std::vector<double> basis, weight;  // basis[r * stride + k]: term r of bond k (xi / delta); weight omega V_j
   std::size_t stride = 0;
-  int node = -1;  // the node whose basis is filled
 };
 inline CorrectedBonds& correctedBonds() {
   static thread_local CorrectedBonds c;
@@ -106,13 +106,13 @@ PF_INLINE void fillFitBasis(const FamilyView& fam, int i, const double* vj, Corr
     phi[3 * st + k] = 0.5 * e0 * e0, phi[4 * st + k] = 0.5 * e1 * e1, phi[5 * st + k] = 0.5 * e2 * e2;
     phi[6 * st + k] = e0 * e1, phi[7 * st + k] = e0 * e2, phi[8 * st + k] = e1 * e2;
   }
-  cb.node = i;
 }
 
 // sum_k a_k b_k c_k over whole chunks of kLanes (the padding adds zeros), summed per lane.
 PF_INLINE double tripleSum(int padded, const double* a, const double* b, const double* c) {
   Lanes acc = {};
-  for (int k = 0; k < padded; k += kLanes) acc += FullChunk{}.load(a + k) * FullChunk{}.load(b + k) * FullChunk{}.load(c + k);
+  for (int k = 0; k < padded; k += kLanes)
+    acc += FullChunk{}.load(a + k) * FullChunk{}.load(b + k) * FullChunk{}.load(c + k);
   return laneSum(acc);
 }
 
@@ -120,14 +120,15 @@ PF_INLINE double tripleSum(int padded, const double* a, const double* b, const d
 // triangle) the moment matrix sum w phi phi^T when M is given.
 template <int N>
 PF_INLINE void fitSums(int n, const CorrectedBonds& cb, const double* a0, const double* a1, const double* a2,
-                    double (*M)[N], double R[N][3]) {
+                       double (*M)[N], double R[N][3]) {
   const int padded = roundUpToLanes(n);
   const double *phi = cb.basis.data(), *w = cb.weight.data();
   for (int r = 0; r < N; ++r) {
     const double* pr = phi + r * cb.stride;
     if (M)
       for (int c = 0; c <= r; ++c) M[r][c] = tripleSum(padded, w, pr, phi + c * cb.stride);
-    R[r][0] = tripleSum(padded, w, pr, a0), R[r][1] = tripleSum(padded, w, pr, a1), R[r][2] = tripleSum(padded, w, pr, a2);
+    R[r][0] = tripleSum(padded, w, pr, a0), R[r][1] = tripleSum(padded, w, pr, a1);
+    R[r][2] = tripleSum(padded, w, pr, a2);
   }
 }
 
@@ -149,7 +150,7 @@ PF_INLINE void subtractFitted(int n, const CorrectedBonds& cb, const double* q, 
 // subtractKeptFit needs to apply the same fit to other vectors (the fit is linear in them) without forming M again.
 template <int N>
 PF_INLINE bool subtractQuadraticOf(int n, const CorrectedBonds& cb, double* a0, double* a1, double* a2,
-                                double* q = nullptr, double* rows = nullptr) {
+                                   double* q = nullptr, double* rows = nullptr) {
   constexpr int L = kLinearOf<N>;
   double M[N][N] = {}, R[N][3] = {};
   fitSums<N>(n, cb, a0, a1, a2, M, R);
@@ -174,7 +175,8 @@ PF_INLINE bool subtractQuadraticOf(int n, const CorrectedBonds& cb, double* a0, 
 // q = rows . sum w phi a, then a -= Q(xi, xi). The same weights as the fit the rows came from (a broken bond has
 // V_j = 0 in both).
 template <int N>
-PF_INLINE void subtractKeptFit(int n, const CorrectedBonds& cb, const double* rows, double* a0, double* a1, double* a2) {
+PF_INLINE void subtractKeptFit(int n, const CorrectedBonds& cb, const double* rows, double* a0, double* a1,
+                               double* a2) {
   constexpr int L = kLinearOf<N>;
   double R[N][3] = {}, q[kMaxFitCoefficients];
   fitSums<N>(n, cb, a0, a1, a2, nullptr, R);
@@ -194,13 +196,13 @@ PF_INLINE void copyBonds(int n, const double* __restrict d0, const double* __res
   for (int k = 0; k < n; ++k) c0[k] = d0[k], c1[k] = d1[k], c2[k] = d2[k], lenY[k] = len[k];
 }
 
-// The correction of a bond's length, d = |Y| - |Y'|, is a second-order term: for the smooth fields it is made for it is a
-// small share of |xi| (a bending field's surface layer, the plate's hole edge: below 1e-2). Where the fit takes in a
-// field that is not smooth (a prescribed line of points, a crack tip) it can exceed the bond's whole stretch and even
-// reverse it (|Y'| half of |xi| for a bond stretched 25 %, beside the coarse beam's loaded line): the force is then no
-// longer monotone in the stretch and Newton stalls. So the correction is limited smoothly to kCorrectionLimit |xi|:
-// g(d) = d / sqrt(1 + (d / (c |xi|))^2), which is d to 1e-2 relative below 0.14 c |xi| and at most c |xi|;
-// g'(d) = (1 + (d / (c |xi|))^2)^(-3/2).
+// The correction of a bond's length, d = |Y| - |Y'|, is a second-order term: for the smooth fields it is made for it
+// is a small share of |xi| (a bending field's surface layer, the plate's hole edge: below 1e-2). Where the fit takes
+// in a field that is not smooth (a prescribed line of points, a crack tip) it can exceed the bond's whole stretch and
+// even reverse it (|Y'| half of |xi| for a bond stretched 25 %, beside the coarse beam's loaded line): the force is
+// then no longer monotone in the stretch and Newton stalls. So the correction is limited smoothly to
+// kCorrectionLimit |xi|: g(d) = d / sqrt(1 + (d / (c |xi|))^2), which is d to 1e-2 relative below 0.14 c |xi| and at
+// most c |xi|; g'(d) = (1 + (d / (c |xi|))^2)^(-3/2).
 constexpr double kCorrectionLimit = 0.05;
 struct LimitedCorrection {
   double value, slope;
@@ -234,8 +236,8 @@ PF_INLINE void rescaleToCorrected(int n, const double* __restrict c0, const doub
 // fit of the same Y (the tangent's products; subtractQuadraticOf's q), or null to fit here, writing the coefficients
 // to q and the rows of M^-1 to rows when those are given. False where the fit is singular (the bonds read as they are).
 template <bool Unit>
-PF_INLINE bool removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScratch& sc, const double* keptQ = nullptr,
-                            double* q = nullptr, double* rows = nullptr) {
+PF_INLINE bool removeQuadratic(const FamilyView& fam, int i, bool planar, FamilyScratch& sc,
+                               const double* keptQ = nullptr, double* q = nullptr, double* rows = nullptr) {
   const int n = fam.offsets[i + 1] - fam.offsets[i];
   CorrectedBonds& cb = correctedBonds();
   if (planar) fillFitBasis<Unit, 5>(fam, i, sc.vj, cb);

@@ -269,8 +269,8 @@ TEST(PlasticTangent, MatchesCentralDifferencesWithGradientCorrection) {
   }
 }
 
-// The same where the correction is limited (OsbGradientCorrection.hpp, limitedCorrection): a field that is not smooth on
-// the lattice scale (each node moved at random by up to 0.2 dx on top of the yielding deformation, as beside a
+// The same where the correction is limited (OsbGradientCorrection.hpp, limitedCorrection): a field that is not smooth
+// on the lattice scale (each node moved at random by up to 0.2 dx on top of the yielding deformation, as beside a
 // prescribed line of points) makes the fitted quadratic part of many bonds a sizeable share of |xi|, where g' is well
 // below 1; the tangent carries g'. Bound kTol as above; the same tangent with g' taken as 1 (the correction unlimited)
 // misses it by far (checked by hand: 0.47 to 0.53).
@@ -305,7 +305,8 @@ TEST(GradientCorrectionLimit, IsTheCorrectionWhenSmallBoundedAndSmooth) {
   for (double d : {0.5 * c * xi, 2.0 * c * xi, 0.6 * xi, 10.0 * xi}) {
     EXPECT_LT(std::fabs(pf::osb::limitedCorrection(d, xi).value), c * xi);
     const double h = 1e-6 * xi;
-    const double fd = (pf::osb::limitedCorrection(d + h, xi).value - pf::osb::limitedCorrection(d - h, xi).value) / (2 * h);
+    const double fd =
+        (pf::osb::limitedCorrection(d + h, xi).value - pf::osb::limitedCorrection(d - h, xi).value) / (2 * h);
     EXPECT_NEAR(pf::osb::limitedCorrection(d, xi).slope, fd, 1e-7 * std::max(1.0, fd));
   }
 }
