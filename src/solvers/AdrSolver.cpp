@@ -1,5 +1,6 @@
 #include "AdrSolver.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -74,6 +75,8 @@ void requireFiniteResidual(Model& model, const ResidualNorms& nr, long step, dou
 // ranks agreeing (one reduction), and stop the run inside the step, the step's state rolled back; the output
 // files keep the converged steps (docs/output.md).
 constexpr int kSignalPoll = 500;
+// How often a long relaxation prints its progress (rank 0, when `Verbose` does not print every iteration).
+constexpr std::chrono::seconds kProgressEvery{30};
 
 void stopIfSignalled(Model& model, double t) {
   const int signal = static_cast<int>(model.max(static_cast<double>(stopSignal())));
@@ -101,6 +104,10 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
   requireFiniteResidual(model, nr, step, t, f, b);
   double tol = 0;
   int it = 0;
+  // A step that relaxes for long (a Newton fallback at a fine resolution can take hours) reports where it is.
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point started = Clock::now();
+  Clock::time_point reported = started;
   for (;; ++it) {
     tol = opt_.relativeTolerance * loadScale(nr, loadFloor);
     const bool absOk = opt_.absoluteTolerance > 0 && nr.residualDensity <= opt_.absoluteTolerance;
@@ -138,6 +145,13 @@ AdrSolver::StepResult AdrSolver::relax(Model& model, std::vector<double>& u, dou
     nr = residualNorms(model, f, b);
     requireFiniteResidual(model, nr, step, t, f, b);
     if (opt_.verbose && root) std::printf("  ADR it %d  residual %.6e  damping %.4f\n", it + 1, nr.residual, c);
+    if (root && !opt_.verbose && Clock::now() - reported > kProgressEvery) {
+      reported = Clock::now();
+      std::printf("  relaxing to t = %g: iteration %d of at most %d, residual %.3e N (tolerance %.3e N), %.0f s\n", t,
+                  it + 1, opt_.maxIterations, nr.residual, tol,
+                  std::chrono::duration<double>(reported - started).count());
+      std::fflush(stdout);
+    }
     if ((it + 1) % kSignalPoll == 0) stopIfSignalled(model, t);
   }
   return {it, nr.residual, tol, nr.load};

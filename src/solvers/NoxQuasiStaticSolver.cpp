@@ -89,6 +89,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   if (depth < opt_.maxCuts) {
     if (root) std::printf("  Newton did not converge on [%g, %g] (residual %.3e, tolerance %.3e): cutting the step\n",
                           tA, tB, m.residual, m.tolerance);
+    std::fflush(stdout);
     const double tm = 0.5 * (tA + tB);
     std::vector<double> half(duPrev);
     for (double& d : half) d *= 0.5;
@@ -101,6 +102,7 @@ NoxQuasiStaticSolver::Outcome NoxQuasiStaticSolver::advance(Model& model, std::v
   }
   if (root) std::printf("  Newton failed on [%g, %g] after %d cuts: falling back to adaptive dynamic relaxation\n", tA,
                         tB, depth);
+  std::fflush(stdout);
   predictStep(model, tB, u, duPrev);
   AdrSolver adr(opt_.fallback);
   AdrSolver::StepResult r{};
