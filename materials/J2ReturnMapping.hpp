@@ -59,6 +59,12 @@ struct OsbJ2Constants {
   // (sigma_zz -> the mean stress), where the paper's sign is arbitrary (docs/materials.md, "Sign of sigma_vm").
   // OsbJ2NodeState::sign stays the third-moment sign (the output's Signed_Von_Mises_Stress).
   bool plasticExtensionSign = false;
+  // With the third-moment sign: once a node has a back stress (q_n != 0), the return takes the sign of its last
+  // committed state and a flip of S3 acts from the next step on. Why: with q != 0 the yield function jumps by 2|q|
+  // where S3 changes sign, so the force is not continuous in the displacement within a step and Newton (and ADR)
+  // can fail to settle beside such a node; on the material-point cycles and the plates the results are unchanged
+  // to the quoted digits (docs/materials.md, "Sign of sigma_vm").
+  bool signFromCommittedState = false;
   // Plane stress with a non-unit influence function: split t^d along omega x, not x (OsbJ2OmegaSplit.hpp), so that
   // the stored plastic extension gives the returned state (docs/materials.md, limitation iii). Needs Swx, Xw, Xw2.
   bool omegaSplit = false;

@@ -116,7 +116,9 @@ template <class Split>
 PF_INLINE OsbJ2Return returnAlong(const Split& tr, const OsbTrialMoments& trial, const OsbJ2NodeState& committed,
                                   const OsbJ2Constants& k) {
   const double thirdMomentSign = vonMisesSign(trial, committed.sign);
-  const double sgn = k.plasticExtensionSign ? plasticExtensionSign(trial) : thirdMomentSign;
+  const bool lagged = k.signFromCommittedState && committed.q != 0.0;  // OsbJ2Constants::signFromCommittedState
+  const double returnSign = lagged ? (committed.sign < 0.0 ? -1.0 : 1.0) : thirdMomentSign;
+  const double sgn = k.plasticExtensionSign ? plasticExtensionSign(trial) : returnSign;
   // Direction of plastic flow along the loading axis, sign(sigma_vm - q) of Eqs. 45-46, 56.
   const double dir = sgn * tr.vm - committed.q >= 0.0 ? 1.0 : -1.0;
   // Current yield level, Eqs. 39/46 (not Eq. 32, which drops q after the sign).

@@ -35,6 +35,7 @@ J2Flow j2Flow(const J2Parameters& p) {
   // 3D and plane strain measure q along the plastic extension (OsbJ2Constants::plasticExtensionSign); plane stress
   // keeps the paper's third-moment sign, which fits its cyclic uniaxial paths better (docs/materials.md).
   f.ret.plasticExtensionSign = p.dim != Dimension::PlaneStress;
+  f.ret.signFromCommittedState = !f.ret.plasticExtensionSign;
   return f;
 }
 

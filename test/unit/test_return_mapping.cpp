@@ -332,6 +332,46 @@ TEST(ReturnMapping, UnloadingPastTheBackStressStaysElastic) {
   EXPECT_NEAR((against.vonMises + against.state.q) / kSy, 1.0, 1e-9);  // |-vm - q| = sigma_y (K = 0)
 }
 
+// OsbJ2Constants::signFromCommittedState (plane stress's third-moment sign in the kernels): a point with a back stress
+// (q = 0.7 sigma_y, committed along +) whose trial third moment passes through zero at vm = 0.4 sigma_y. With the
+// paper's rule the return jumps there, elastic on one side and yielding on the other (|-vm - q| = 1.1 sigma_y): the
+// force is not continuous in the displacement. With the committed sign both sides return the same state (elastic;
+// the stored sign follows S3, for the output and the next step), and once that sign is committed the reversed
+// trial state yields as the paper's return does. Exact equalities: the same arithmetic on the same inputs.
+TEST(ReturnMapping, ThirdMomentFlipWithBackStressActsFromTheNextStep) {
+  const double m = 0.8 * kPi * std::pow(kDelta, 5);
+  const double H = 20e9, q = 0.7 * kSy;
+  OsbJ2Constants paper = paperConstants(Dimension::ThreeD, m, 0, H);
+  OsbJ2Constants lagged = paper;
+  lagged.signFromCommittedState = true;
+  const OsbJ2NodeState n{1e-3, q / H, q, 1.0};
+  const OsbTrialMoments plus = moments3D(paper, m, 0.4 * kSy, 1e-3), minus = moments3D(paper, m, 0.4 * kSy, -1e-3);
+  // The paper's rule: the jump.
+  EXPECT_EQ(pf::osbJ2ReturnMapping(plus, n, paper).dlambda, 0.0);
+  EXPECT_GT(pf::osbJ2ReturnMapping(minus, n, paper).dlambda, 0.0);
+  // The committed sign: no jump.
+  const OsbJ2Return a = pf::osbJ2ReturnMapping(plus, n, lagged), b = pf::osbJ2ReturnMapping(minus, n, lagged);
+  EXPECT_EQ(a.dlambda, 0.0);
+  EXPECT_EQ(b.dlambda, 0.0);
+  EXPECT_EQ(a.vonMises, b.vonMises);
+  EXPECT_EQ(a.G1, b.G1);
+  EXPECT_EQ(b.state.q, q);
+  EXPECT_EQ(a.state.sign, 1.0);
+  EXPECT_EQ(b.state.sign, -1.0);
+  // The next step, from the committed flipped sign: the paper's reverse yield.
+  const OsbJ2NodeState flipped{n.lambda, n.alpha, n.q, b.state.sign};
+  const OsbJ2Return next = pf::osbJ2ReturnMapping(minus, flipped, lagged), ref = pf::osbJ2ReturnMapping(minus, n, paper);
+  EXPECT_GT(next.dlambda, 0.0);
+  EXPECT_EQ(next.dlambda, ref.dlambda);
+  EXPECT_EQ(next.state.q, ref.state.q);
+  // Without a back stress the sign does not enter the returned state's force: the current S3 is used as before.
+  const OsbJ2NodeState hardened{1e-3, 1e-3, 0.0, 1.0};
+  const OsbJ2Return c = pf::osbJ2ReturnMapping(moments3D(paper, m, 1.2 * kSy, -1.0), hardened, lagged),
+                    d = pf::osbJ2ReturnMapping(moments3D(paper, m, 1.2 * kSy, -1.0), hardened, paper);
+  EXPECT_EQ(c.state.q, d.state.q);
+  EXPECT_EQ(c.dlambda, d.dlambda);
+}
+
 // Failures come back as a status (the bond loop turns them into ConstitutiveFailure).
 TEST(ReturnMapping, FailuresAreStatuses) {
   const double m = 0.8 * kPi * std::pow(kDelta, 5);
