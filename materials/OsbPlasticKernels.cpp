@@ -33,7 +33,8 @@ J2Flow j2Flow(const J2Parameters& p) {
   f.ret.tolerance = p.tolerance;
   f.ret.maxIterations = p.maxIterations;
   // 3D and plane strain measure q along the plastic extension (OsbJ2Constants::plasticExtensionSign); plane stress
-  // keeps the paper's third-moment sign, which fits its cyclic uniaxial paths better (docs/materials.md).
+  // keeps the paper's third-moment sign, which fits its cyclic uniaxial paths better (docs/materials.md), taken from
+  // the committed state once a node has a back stress (OsbJ2Constants::signFromCommittedState).
   f.ret.plasticExtensionSign = p.dim != Dimension::PlaneStress;
   f.ret.signFromCommittedState = !f.ret.plasticExtensionSign;
   return f;
