@@ -29,7 +29,7 @@ struct OsbTrialMoments {
   double A3;  // sum |t^d| (t^d)^2 V: the scale S3 is compared with
   double Xx;  // x . x
   // sum t^d_tr e^dp_n V: the trial state against the committed plastic extension, whose sign is the sign of
-  // sigma_vm under OsbJ2Constants::plasticExtensionSign (0 for a node that has not flowed)
+  // sigma_vm under OsbJ2SignRule::PlasticExtension (0 for a node that has not flowed)
   double Se = 0.0;
   // The split along omega x (OsbJ2Constants::omegaSplit, OsbJ2OmegaSplit.hpp; unset otherwise): sum omega x t^d V,
   // m = sum omega x^2 V, sum omega^2 x^2 V
@@ -44,6 +44,22 @@ struct OsbJ2NodeState {
   double sign;    // sign of sigma_vm by the third moment: +1/-1, 0 = never set (taken as +1)
 };
 
+// The sign that orients sigma_vm against q in the return (docs/materials.md, "Sign of sigma_vm"). OsbJ2NodeState::sign
+// stays the third-moment sign whatever the rule (the output's Signed_Von_Mises_Stress).
+enum class OsbJ2SignRule {
+  // The paper's: the sign of the trial state's third moment S3.
+  ThirdMoment,
+  // S3's sign as committed at the end of the last step once the node has a back stress (q_n != 0), so that a flip of
+  // S3 acts from the next step on. Why: with q != 0 the yield function jumps by 2|q| where S3 changes sign, so the
+  // force is not continuous in the displacement within a step and Newton (and ADR) can fail to settle beside such a
+  // node; on the material-point cycles and the plates the results are unchanged to the quoted digits.
+  CommittedThirdMoment,
+  // From the committed plastic extension (OsbTrialMoments::Se), so that q is measured along e^dp, the direction of a
+  // Prager back stress. S3 vanishes in pure shear and, in plane strain, in all plastic flow (sigma_zz -> the mean
+  // stress), where the paper's sign is arbitrary.
+  PlasticExtension,
+};
+
 struct OsbJ2Constants {
   OsbYieldConstants yield;  // of the node's normalisation volume
   double bm;                // B/m_i = -B of Eq. 48 (B = 15 mu or 8 mu)
@@ -53,18 +69,7 @@ struct OsbJ2Constants {
   double peridigmH;
   double tolerance;         // on Eq. 50 written as sigma_vm - sigma_bar, relative to sigma_vm,tr
   int maxIterations;        // Newton updates
-  // The sign that orients sigma_vm against q in the return: from the committed plastic extension
-  // (OsbTrialMoments::Se) instead of the third moment S3 (the paper's), so that q is measured along e^dp, the
-  // direction of a Prager back stress. S3 vanishes in pure shear and, in plane strain, in all plastic flow
-  // (sigma_zz -> the mean stress), where the paper's sign is arbitrary (docs/materials.md, "Sign of sigma_vm").
-  // OsbJ2NodeState::sign stays the third-moment sign (the output's Signed_Von_Mises_Stress).
-  bool plasticExtensionSign = false;
-  // With the third-moment sign: once a node has a back stress (q_n != 0), the return takes the sign of its last
-  // committed state and a flip of S3 acts from the next step on. Why: with q != 0 the yield function jumps by 2|q|
-  // where S3 changes sign, so the force is not continuous in the displacement within a step and Newton (and ADR)
-  // can fail to settle beside such a node; on the material-point cycles and the plates the results are unchanged
-  // to the quoted digits (docs/materials.md, "Sign of sigma_vm").
-  bool signFromCommittedState = false;
+  OsbJ2SignRule signRule = OsbJ2SignRule::ThirdMoment;  // orients sigma_vm against q in the return
   // Plane stress with a non-unit influence function: split t^d along omega x, not x (OsbJ2OmegaSplit.hpp), so that
   // the stored plastic extension gives the returned state (docs/materials.md, limitation iii). Needs Swx, Xw, Xw2.
   bool omegaSplit = false;

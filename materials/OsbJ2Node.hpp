@@ -50,7 +50,7 @@ PF_INLINE double vonMisesSign(const OsbTrialMoments& t, double committedSign) {
   return sgn;
 }
 
-// Sign of sigma_vm along the committed plastic extension (OsbJ2Constants::plasticExtensionSign): + while the
+// Sign of sigma_vm along the committed plastic extension (OsbJ2SignRule::PlasticExtension): + while the
 // trial state points along e^dp_n, - against it; + for a node that has not flowed (its first flow sets e^dp).
 PF_INLINE double plasticExtensionSign(const OsbTrialMoments& t) { return t.Se < 0.0 ? -1.0 : 1.0; }
 
@@ -116,9 +116,10 @@ template <class Split>
 PF_INLINE OsbJ2Return returnAlong(const Split& tr, const OsbTrialMoments& trial, const OsbJ2NodeState& committed,
                                   const OsbJ2Constants& k) {
   const double thirdMomentSign = vonMisesSign(trial, committed.sign);
-  const bool lagged = k.signFromCommittedState && committed.q != 0.0;  // OsbJ2Constants::signFromCommittedState
-  const double returnSign = lagged ? (committed.sign < 0.0 ? -1.0 : 1.0) : thirdMomentSign;
-  const double sgn = k.plasticExtensionSign ? plasticExtensionSign(trial) : returnSign;
+  double sgn = thirdMomentSign;  // OsbJ2SignRule
+  if (k.signRule == OsbJ2SignRule::PlasticExtension) sgn = plasticExtensionSign(trial);
+  else if (k.signRule == OsbJ2SignRule::CommittedThirdMoment && committed.q != 0.0)
+    sgn = committed.sign < 0.0 ? -1.0 : 1.0;
   // Direction of plastic flow along the loading axis, sign(sigma_vm - q) of Eqs. 45-46, 56.
   const double dir = sgn * tr.vm - committed.q >= 0.0 ? 1.0 : -1.0;
   // Current yield level, Eqs. 39/46 (not Eq. 32, which drops q after the sign).
@@ -294,7 +295,8 @@ PF_INLINE void j2Node(const FamilyView& fam, const J2Parameters& p, const J2Flow
     // q is measured along e^dp: when the flow carried e^dp through zero, its direction, and so q's sign, turned. With
     // Eq. 52's flow (G1 = G2, phi = 1 where this sign is used) sum e^dp_n+1 e^dp_n V = |e^dp_n|^2 + a1 Se, which
     // can only turn negative when Se < 0, so the sum is formed only then (and for the omega-free flow).
-    if (k.plasticExtensionSign && (trial.Se < 0.0 || overOmega) && alongCommitted(ep, epN, vj, n, inBlock) < 0.0)
+    if (k.signRule == OsbJ2SignRule::PlasticExtension && (trial.Se < 0.0 || overOmega) &&
+        alongCommitted(ep, epN, vj, n, inBlock) < 0.0)
       r.state.q = -r.state.q;
   } else {
     for (int b = 0; b < n; ++b) ep[b] = epN[b];  // every trial value is written: StateStore::commit swaps

@@ -32,11 +32,11 @@ J2Flow j2Flow(const J2Parameters& p) {
   f.ret.peridigmH = p.peridigmHardening;
   f.ret.tolerance = p.tolerance;
   f.ret.maxIterations = p.maxIterations;
-  // 3D and plane strain measure q along the plastic extension (OsbJ2Constants::plasticExtensionSign); plane stress
-  // keeps the paper's third-moment sign, which fits its cyclic uniaxial paths better (docs/materials.md), taken from
-  // the committed state once a node has a back stress (OsbJ2Constants::signFromCommittedState).
-  f.ret.plasticExtensionSign = p.dim != Dimension::PlaneStress;
-  f.ret.signFromCommittedState = !f.ret.plasticExtensionSign;
+  // 3D and plane strain measure q along the plastic extension; plane stress keeps the paper's third-moment sign, which
+  // fits its cyclic uniaxial paths better (docs/materials.md), taken from the committed state once a node has a back
+  // stress (OsbJ2SignRule).
+  f.ret.signRule =
+      p.dim == Dimension::PlaneStress ? OsbJ2SignRule::CommittedThirdMoment : OsbJ2SignRule::PlasticExtension;
   return f;
 }
 

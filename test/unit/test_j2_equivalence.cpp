@@ -288,7 +288,7 @@ TEST(J2Equivalence, PartialVolumeFamilies) {
 
 // Cyclic pure shear (eps_xy 0 -> +1.2 -> -1.2 -> +1.2 %): the third moment of t^d vanishes along the whole path, so
 // the paper's sign of sigma_vm never turns and a back stress q > 0 cannot show the Bauschinger effect. 3D and
-// plane strain orient q by the committed plastic extension instead (OsbJ2Constants::plasticExtensionSign): von
+// plane strain orient q by the committed plastic extension instead (OsbJ2SignRule::PlasticExtension): von
 // Mises within 1 % of sigma_y of tensor J2 with H > 0 as for the other paths (measured, ratio 15 / 30: kin 0.22 /
 // 0.88 %, mixed 0.24 / 0.98 %; with the third-moment sign 1.92 / 1.90 % and 4.33 / 4.67 %). Plane stress keeps the
 // paper's sign (kin 6.73 %, mixed 4.67 %: docs/materials.md, limitation (i)). Only H > 0 is at stake: with H = 0 the

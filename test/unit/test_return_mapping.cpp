@@ -332,7 +332,7 @@ TEST(ReturnMapping, UnloadingPastTheBackStressStaysElastic) {
   EXPECT_NEAR((against.vonMises + against.state.q) / kSy, 1.0, 1e-9);  // |-vm - q| = sigma_y (K = 0)
 }
 
-// OsbJ2Constants::signFromCommittedState (plane stress's third-moment sign in the kernels): a point with a back stress
+// OsbJ2SignRule::CommittedThirdMoment (plane stress's rule in the kernels): a point with a back stress
 // (q = 0.7 sigma_y, committed along +) whose trial third moment passes through zero at vm = 0.4 sigma_y. With the
 // paper's rule the return jumps there, elastic on one side and yielding on the other (|-vm - q| = 1.1 sigma_y): the
 // force is not continuous in the displacement. With the committed sign both sides return the same state (elastic;
@@ -343,7 +343,7 @@ TEST(ReturnMapping, ThirdMomentFlipWithBackStressActsFromTheNextStep) {
   const double H = 20e9, q = 0.7 * kSy;
   OsbJ2Constants paper = paperConstants(Dimension::ThreeD, m, 0, H);
   OsbJ2Constants lagged = paper;
-  lagged.signFromCommittedState = true;
+  lagged.signRule = pf::OsbJ2SignRule::CommittedThirdMoment;
   const OsbJ2NodeState n{1e-3, q / H, q, 1.0};
   const OsbTrialMoments plus = moments3D(paper, m, 0.4 * kSy, 1e-3), minus = moments3D(paper, m, 0.4 * kSy, -1e-3);
   // The paper's rule: the jump.
@@ -360,7 +360,8 @@ TEST(ReturnMapping, ThirdMomentFlipWithBackStressActsFromTheNextStep) {
   EXPECT_EQ(b.state.sign, -1.0);
   // The next step, from the committed flipped sign: the paper's reverse yield.
   const OsbJ2NodeState flipped{n.lambda, n.alpha, n.q, b.state.sign};
-  const OsbJ2Return next = pf::osbJ2ReturnMapping(minus, flipped, lagged), ref = pf::osbJ2ReturnMapping(minus, n, paper);
+  const OsbJ2Return next = pf::osbJ2ReturnMapping(minus, flipped, lagged);
+  const OsbJ2Return ref = pf::osbJ2ReturnMapping(minus, n, paper);
   EXPECT_GT(next.dlambda, 0.0);
   EXPECT_EQ(next.dlambda, ref.dlambda);
   EXPECT_EQ(next.state.q, ref.state.q);
